@@ -1,0 +1,45 @@
+// Triangulation<D>: the result of a CDT computation, in flat arrays.
+//
+//   points:     (n_input + n_steiner) x D. The first num_input_points are the PLC's points, unchanged
+//               and in the same order, so vertex ids of the PLC remain valid.
+//   steiner_on: per Steiner point (point num_input_points + k), the constraining simplex it was put on,
+//               or kNone for a point in the interior of the domain.
+//   simplices:  s x (D+1) vertex ids, every simplex positively oriented (orient > 0).
+//   neighbors:  s x (D+1): entry (D+1)*t + i is the facet opposite vertex i of simplex t, seen from the
+//               other side, encoded as (D+1)*u + j (simplex u, its facet opposite vertex j), or kNone.
+//   regions:    s region ids (empty when the caller asked for none).
+//
+// Local numbering: facet i of a simplex is the simplex without its vertex i.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace sweepcdt {
+
+inline constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+template <int D>
+struct Triangulation {
+  static constexpr int dimension = D;
+
+  std::vector<double> points;
+  uint32_t num_input_points = 0;
+  std::vector<uint32_t> steiner_on;
+  std::vector<uint32_t> simplices;
+  std::vector<uint32_t> neighbors;
+  std::vector<int32_t> regions;
+
+  std::size_t num_points() const { return points.size() / D; }
+  std::size_t num_simplices() const { return simplices.size() / (D + 1); }
+  const double* point(uint32_t i) const { return points.data() + std::size_t{i} * D; }
+  const uint32_t* simplex(std::size_t t) const { return simplices.data() + t * (D + 1); }
+};
+
+// Fills tri.neighbors from tri.simplices (facets shared by more than two simplices are left unpaired;
+// validate() reports them).
+template <int D>
+void compute_neighbors(Triangulation<D>& tri);
+
+}  // namespace sweepcdt

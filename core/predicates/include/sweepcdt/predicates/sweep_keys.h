@@ -1,0 +1,31 @@
+// The priority-queue keys of SWEEPCDT (paper §3), compared exactly and with the same lifting-map
+// perturbation as insphere_perturbed (paper §6: "the same method and vertex order must be used in
+// the tests that determine the order of circumcenters").
+//
+// Perturbing the lifted heights w_v -> w_v - eps_v moves a circumcentre (it becomes the centre of the
+// power/orthogonal sphere) and moves every power linearly in eps, so each comparison below is a sign
+// of  value + sum_v eps_v * coeff_v  : the value if it is non-zero, else the coefficient of the
+// least vertex id that is non-zero.
+#pragma once
+#include "sweepcdt/predicates/sign.h"
+#include "sweepcdt/predicates/vertex.h"
+
+namespace sweepcdt::predicates {
+
+// Lexicographic comparison of the (perturbed) circumcentres of two non-degenerate D-simplices:
+// Negative when s's centre comes first (sweep-plane order), Zero only for equal centres.
+template <int D>
+Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t);
+
+// sign(Psi_q(s) - Psi_q(t)), where Psi_q(s) = |q O_s|^2 - r_s^2 is the power of q with respect to
+// the (perturbed) circumsphere of s. q's own lift cancels, so q need not be a vertex.
+template <int D>
+Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q);
+
+// Lexicographic comparison of power tuples Psi_Delta(s) = <Psi_Delta0(s), ..., Psi_DeltaD(s)> for
+// the seed simplex delta (sweep-sphere order): Negative when s comes first.
+template <int D>
+Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
+                          const Vertices<D + 1>& delta);
+
+}  // namespace sweepcdt::predicates

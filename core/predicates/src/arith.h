@@ -1,0 +1,185 @@
+// Internal: the two number systems a predicate formula is evaluated in, the generic determinant, and
+// filtered_sign(), which runs a formula in the filter first and exactly only if needed.
+//
+// A formula is a generic callable  formula(Arith& a) -> Arith::T  built only from a.diff(x, y) (an
+// input-coordinate difference), +, -, * — so one text is the filter, the bit-size dry run, and the
+// exact evaluations (fixed-width integers, or GMP dyadics for inputs of extreme binary range).
+#pragma once
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "approx.h"
+#include "dyadic.h"
+#include "stats_counters.h"
+#include "wide_int.h"
+#include "sweepcdt/predicates/sign.h"
+
+namespace sweepcdt::predicates::detail {
+
+struct FilterArith {
+  using T = Approx;
+  static T diff(double a, double b) { return approx_difference(a, b); }
+};
+
+struct ExactArith {
+  using T = Dyadic;
+  static T diff(double a, double b) { return Dyadic(a) - Dyadic(b); }
+};
+
+inline Sign sign_of(const Dyadic& d) { return static_cast<Sign>(d.sign()); }
+
+// A dry run of a formula: records the binary range of its inputs and a bound on the size of its
+// value, as  |value| < 2^(degree * (B + 1) + extra)  when every input is an integer of at most B bits
+// (differences have B + 1). Sums add one bit; products add degrees and extras.
+struct BitBound {
+  int degree = 0, extra = 0;
+  friend BitBound operator+(const BitBound& a, const BitBound& b) {
+    return {std::max(a.degree, b.degree), std::max(a.extra, b.extra) + 1};
+  }
+  friend BitBound operator-(const BitBound& a, const BitBound& b) { return a + b; }
+  friend BitBound operator*(const BitBound& a, const BitBound& b) { return {a.degree + b.degree, a.extra + b.extra}; }
+  BitBound operator-() const { return *this; }
+};
+
+// x = (negative ? -1 : 1) * mantissa * 2^exponent, read off the IEEE-754 bits (subnormals included).
+struct Decomposed {
+  uint64_t mantissa;
+  int exponent;
+  bool negative;
+};
+inline Decomposed decompose(double x) {
+  const auto bits = std::bit_cast<uint64_t>(x);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  uint64_t mantissa = bits & ((uint64_t{1} << 52) - 1);
+  if (biased != 0) mantissa |= uint64_t{1} << 52;
+  return {mantissa, biased == 0 ? -1074 : biased - 1075, (bits >> 63) != 0};
+}
+
+struct ScanArith {
+  using T = BitBound;
+  int lowest_bit = std::numeric_limits<int>::max();   // exponent of the lowest set bit of any input
+  int highest_bit = std::numeric_limits<int>::min();  // exponent of the highest set bit of any input
+  bool finite = true;
+  void see(double x) {
+    finite = finite && std::isfinite(x);
+    const Decomposed d = decompose(x);
+    if (d.mantissa == 0) return;
+    lowest_bit = std::min(lowest_bit, d.exponent + std::countr_zero(d.mantissa));
+    highest_bit = std::max(highest_bit, d.exponent + 63 - std::countl_zero(d.mantissa));
+  }
+  T diff(double a, double b) {
+    see(a);
+    see(b);
+    return {1, 0};
+  }
+};
+
+// Inputs scaled by 2^-lowest_bit are integers below 2^62; evaluated in WideInt<L>.
+template <int L>
+struct WideArith {
+  using T = WideInt<L>;
+  int lowest_bit;
+  int64_t scaled(double x) const {
+    const Decomposed d = decompose(x);
+    const int shift = d.exponent - lowest_bit;  // >= -(trailing zeros of the mantissa): exact
+    const auto magnitude = static_cast<int64_t>(shift >= 0 ? d.mantissa << shift : d.mantissa >> -shift);
+    return d.negative ? -magnitude : magnitude;
+  }
+  T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
+};
+
+// Exact sign of a formula: fixed-width integers when the dry run proves they suffice, else dyadics.
+template <class Formula>
+Sign exact_sign(const Formula& formula) {
+  count_exact();
+  ScanArith scan;
+  const BitBound bound = formula(scan);
+  if (scan.finite && scan.lowest_bit == std::numeric_limits<int>::max()) return Sign::Zero;  // all inputs 0
+  const int input_bits = scan.highest_bit - scan.lowest_bit + 1;
+  if (scan.finite && input_bits <= 62) {  // non-finite input: the dyadic path reports it
+    const int value_bits = bound.degree * (input_bits + 1) + bound.extra;  // must stay below the sign bit
+    const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
+    if (value_bits < 2 * 64) return run(WideArith<2>{scan.lowest_bit});
+    if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
+    if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
+    if (value_bits < 12 * 64) return run(WideArith<12>{scan.lowest_bit});
+  }
+  ExactArith exact;
+  return sign_of(formula(exact));
+}
+
+template <class Formula>
+Sign filtered_sign(const Formula& formula) {
+  FilterArith filter;
+  if (const auto s = certain_sign(formula(filter))) {
+    count_filtered();
+    return *s;
+  }
+  return exact_sign(formula);
+}
+
+// det of an N x N row-major matrix by Laplace expansion, memoising the minors of the first k columns
+// over row subsets (bitmask -> minor): O(N 2^N) products instead of O(N!).
+template <int N, class T>
+T determinant(const std::array<T, N * N>& a) {
+  if constexpr (N == 1) {
+    return a[0];
+  } else {
+    std::array<T, (1u << N)> minor{};
+    for (int r = 0; r < N; ++r) minor[1u << r] = a[r * N];
+    for (int k = 2; k <= N; ++k) {
+      for (unsigned mask = 1; mask < (1u << N); ++mask) {
+        if (std::popcount(mask) != k) continue;
+        if (k == N && mask != (1u << N) - 1) continue;
+        // Expand the k x k minor (rows of mask, columns 0..k-1) along its last column k-1.
+        T sum{};
+        int position = 0;
+        for (int r = 0; r < N; ++r) {
+          if (!((mask >> r) & 1u)) continue;
+          T term = a[r * N + k - 1] * minor[mask & ~(1u << r)];
+          const bool negative = ((position + k - 1) & 1) != 0;
+          if (position == 0)
+            sum = negative ? -term : term;
+          else
+            sum = negative ? sum - term : sum + term;
+          ++position;
+        }
+        minor[mask] = sum;
+      }
+    }
+    return minor[(1u << N) - 1];
+  }
+}
+
+// det [p_i - p_D]_{i<D}: D! times the signed volume of the simplex p_0..p_D.
+template <int D, class Arith, class Points>
+typename Arith::T orient_det(Arith& arith, const Points& p) {
+  using T = typename Arith::T;
+  std::array<T, D * D> m;
+  for (int i = 0; i < D; ++i)
+    for (int k = 0; k < D; ++k) m[i * D + k] = arith.diff(p[i][k], p[D][k]);
+  return determinant<D>(m);
+}
+
+// The coefficient of q_k in the affine function q -> det [[f_0,1],...,[f_{D-1},1],[q,1]]
+// = (-1)^{D+k} orient_{D-1}(f projected without axis k). Component k of f's normal vector.
+template <int D, class Arith, class Points>
+typename Arith::T normal_component(Arith& arith, const Points& f, int k) {
+  using T = typename Arith::T;
+  constexpr int M = D - 1;
+  std::array<T, M * M> m;
+  for (int i = 0; i < M; ++i) {
+    int col = 0;
+    for (int axis = 0; axis < D; ++axis) {
+      if (axis == k) continue;
+      m[i * M + col++] = arith.diff(f[i][axis], f[M][axis]);
+    }
+  }
+  T det = determinant<M>(m);
+  return ((D + k) & 1) ? -det : det;
+}
+
+}  // namespace sweepcdt::predicates::detail

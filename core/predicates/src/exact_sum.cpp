@@ -1,0 +1,48 @@
+#include "sweepcdt/predicates/exact_sum.h"
+
+#include "arith.h"
+
+namespace sweepcdt::predicates {
+
+struct ExactMeasureSum::Impl {
+  detail::Dyadic sum;
+};
+
+ExactMeasureSum::ExactMeasureSum() : impl_(std::make_unique<Impl>()) {}
+ExactMeasureSum::~ExactMeasureSum() = default;
+ExactMeasureSum::ExactMeasureSum(const ExactMeasureSum& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+ExactMeasureSum& ExactMeasureSum::operator=(const ExactMeasureSum& o) {
+  *impl_ = *o.impl_;
+  return *this;
+}
+
+template <int D>
+void ExactMeasureSum::add_volume(const Coords<D + 1>& p, bool subtract) {
+  detail::ExactArith exact;
+  const detail::Dyadic v = detail::orient_det<D>(exact, p);
+  impl_->sum = subtract ? impl_->sum - v : impl_->sum + v;
+}
+
+template <int D>
+void ExactMeasureSum::add_projected_measure(const Coords<D>& f, int drop) {
+  detail::ExactArith exact;
+  const detail::Dyadic v = detail::normal_component<D>(exact, f, drop);
+  impl_->sum = v.sign() < 0 ? impl_->sum - v : impl_->sum + v;
+}
+
+Sign ExactMeasureSum::compare(const ExactMeasureSum& other) const {
+  return detail::sign_of(impl_->sum - other.impl_->sum);
+}
+
+double ExactMeasureSum::to_double() const { return impl_->sum.to_double(); }
+
+#define SWEEPCDT_INSTANTIATE(D)                                                      \
+  template void ExactMeasureSum::add_volume<D>(const Coords<D + 1>&, bool);          \
+  template void ExactMeasureSum::add_projected_measure<D>(const Coords<D>&, int);
+SWEEPCDT_INSTANTIATE(2)
+SWEEPCDT_INSTANTIATE(3)
+SWEEPCDT_INSTANTIATE(4)
+SWEEPCDT_INSTANTIATE(5)
+#undef SWEEPCDT_INSTANTIATE
+
+}  // namespace sweepcdt::predicates

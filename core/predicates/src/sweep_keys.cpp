@@ -1,0 +1,200 @@
+// Paper §3 (priority-queue keys) with the perturbation of §6. Derivations in sweep_keys.h and below.
+#include "sweepcdt/predicates/sweep_keys.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "arith.h"
+#include "sweepcdt/predicates/orientation.h"
+
+namespace sweepcdt::predicates {
+namespace {
+
+using detail::Dyadic;
+using detail::ExactArith;
+
+// Circumcentre of s = (p_0..p_D) relative to p_D solves A c' = b'/2 with rows a_i = p_i - p_D and
+// b'_i = |a_i|^2 - eps_i + eps_D (i < D). By Cramer, c_k = p_D[k] + N_k / (2 det A), N_k = det A with
+// column k replaced by b'. Hence for two simplices
+//   2 det A_s det A_t (c_k(s) - c_k(t)) = 2 (p^s_D[k] - p^t_D[k]) Ds Dt + N_k(s) Dt - N_k(t) Ds.
+template <int D, class Arith>
+struct Lifted {
+  using T = typename Arith::T;
+  std::array<T, D * D> a;  // rows p_i - p_D
+  std::array<T, D> b;      // |p_i - p_D|^2
+  T det;
+  Lifted(Arith& arith, const Vertices<D + 1>& s) {
+    for (int i = 0; i < D; ++i) {
+      for (int k = 0; k < D; ++k) {
+        a[i * D + k] = arith.diff(s[i].x[k], s[D].x[k]);
+        b[i] = k == 0 ? a[i * D] * a[i * D] : b[i] + a[i * D + k] * a[i * D + k];
+      }
+    }
+    det = detail::determinant<D>(a);
+  }
+  std::array<T, D * D> with_column(int k, const std::array<T, D>& column) const {
+    auto m = a;
+    for (int i = 0; i < D; ++i) m[i * D + k] = column[i];
+    return m;
+  }
+};
+
+template <int D>
+struct CircumcenterDifference {
+  const Vertices<D + 1>& s;
+  const Vertices<D + 1>& t;
+  int k;
+  template <class Arith>
+  typename Arith::T operator()(Arith& a) const {
+    const Lifted<D, Arith> ls(a, s), lt(a, t);
+    const auto nks = detail::determinant<D>(ls.with_column(k, ls.b));
+    const auto nkt = detail::determinant<D>(lt.with_column(k, lt.b));
+    const auto shift = a.diff(s[D].x[k], t[D].x[k]);
+    return (shift + shift) * ls.det * lt.det + nks * lt.det - nkt * ls.det;
+  }
+};
+
+// Coefficient of eps_v in N_k: the column b' holds -eps_{p_i} in row i and +eps_{p_D} in every row.
+template <int D>
+Dyadic eps_coefficient_of_nk(const Lifted<D, ExactArith>& l, const Vertices<D + 1>& s, int k, uint32_t v) {
+  const Dyadic one(1.0), zero;
+  std::array<Dyadic, D> column;
+  if (s[D].id == v) {
+    column.fill(one);
+    return detail::determinant<D>(l.with_column(k, column));
+  }
+  for (int i = 0; i < D; ++i) {
+    if (s[i].id != v) continue;
+    column.fill(zero);
+    column[i] = one;
+    return -detail::determinant<D>(l.with_column(k, column));
+  }
+  return zero;
+}
+
+template <int D>
+std::vector<uint32_t> ids_ascending(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
+  std::vector<uint32_t> ids;
+  for (const auto& v : s) ids.push_back(v.id);
+  for (const auto& v : t) ids.push_back(v.id);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+template <int D>
+Sign orientation_product(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const char* who) {
+  const Sign os = orient<D>(coords_of(s)), ot = orient<D>(coords_of(t));
+  if (os == Sign::Zero || ot == Sign::Zero) throw std::invalid_argument(std::string(who) + ": degenerate simplex");
+  return os * ot;
+}
+
+// The power of q w.r.t. the sphere through the lifted vertices of s is Psi_q(s) = -L_s / Ds, with
+// L_s = det [p_i - q, |p_i - q|^2]_{i<=D} (insphere's matrix) and Ds = det [p_i - p_D]. So
+//   Ds Dt (Psi_q(s) - Psi_q(t)) = L_t Ds - L_s Dt.
+// Perturbed lifts |p_i - q|^2 - eps_{p_i} make L_s(eps) = L_s - sum_i eps_{p_i} K_i, where
+// K_i = (-1)^{i+D} det [p_j - q]_{j != i} is the cofactor of the lift in row i. q's own lift cancels.
+template <int D, class Arith>
+typename Arith::T lifted_det(Arith& arith, const Vertices<D + 1>& s, const Vertex& q) {
+  using T = typename Arith::T;
+  constexpr int N = D + 1;
+  std::array<T, N * N> m;
+  for (int i = 0; i <= D; ++i) {
+    T lift{};
+    for (int k = 0; k < D; ++k) {
+      const T d = arith.diff(s[i].x[k], q.x[k]);
+      m[i * N + k] = d;
+      lift = k == 0 ? d * d : lift + d * d;
+    }
+    m[i * N + D] = lift;
+  }
+  return detail::determinant<N>(m);
+}
+
+template <int D>
+struct PowerDifference {
+  const Vertices<D + 1>& s;
+  const Vertices<D + 1>& t;
+  const Vertex& q;
+  template <class Arith>
+  typename Arith::T operator()(Arith& a) const {
+    const auto ds = detail::orient_det<D>(a, coords_of(s));
+    const auto dt = detail::orient_det<D>(a, coords_of(t));
+    return lifted_det<D>(a, t, q) * ds - lifted_det<D>(a, s, q) * dt;
+  }
+};
+
+template <int D>
+Dyadic lift_cofactor(const Vertices<D + 1>& s, const Vertex& q, uint32_t v) {
+  for (int i = 0; i <= D; ++i) {
+    if (s[i].id != v) continue;
+    std::array<Dyadic, D * D> m;
+    for (int j = 0, r = 0; j <= D; ++j) {
+      if (j == i) continue;
+      for (int k = 0; k < D; ++k) m[r * D + k] = ExactArith::diff(s[j].x[k], q.x[k]);
+      ++r;
+    }
+    const Dyadic minor = detail::determinant<D>(m);
+    return ((i + D) & 1) ? -minor : minor;
+  }
+  return Dyadic();
+}
+
+}  // namespace
+
+template <int D>
+Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
+  const Sign sigma = orientation_product<D>(s, t, "compare_circumcenters");
+  for (int k = 0; k < D; ++k) {
+    const Sign r = detail::filtered_sign(CircumcenterDifference<D>{s, t, k});
+    if (r != Sign::Zero) return r * sigma;
+    // Equal unperturbed coordinate: the eps terms decide, least vertex id first.
+    detail::count_perturbed();
+    ExactArith exact;
+    const Lifted<D, ExactArith> ls(exact, s), lt(exact, t);
+    for (const uint32_t v : ids_ascending<D>(s, t)) {
+      const Dyadic c = eps_coefficient_of_nk<D>(ls, s, k, v) * lt.det - eps_coefficient_of_nk<D>(lt, t, k, v) * ls.det;
+      if (c.sign() != 0) return detail::sign_of(c) * sigma;
+    }
+  }
+  return Sign::Zero;
+}
+
+template <int D>
+Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
+  const Sign sigma = orientation_product<D>(s, t, "compare_power");
+  const Sign r = detail::filtered_sign(PowerDifference<D>{s, t, q});
+  if (r != Sign::Zero) return r * sigma;
+  detail::count_perturbed();
+  ExactArith exact;
+  const Dyadic ds = detail::orient_det<D>(exact, coords_of(s));
+  const Dyadic dt = detail::orient_det<D>(exact, coords_of(t));
+  for (const uint32_t v : ids_ascending<D>(s, t)) {
+    // coefficient of eps_v in L_t Ds - L_s Dt
+    const Dyadic c = lift_cofactor<D>(s, q, v) * dt - lift_cofactor<D>(t, q, v) * ds;
+    if (c.sign() != 0) return detail::sign_of(c) * sigma;
+  }
+  return Sign::Zero;
+}
+
+template <int D>
+Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertices<D + 1>& delta) {
+  for (const Vertex& q : delta) {
+    const Sign r = compare_power<D>(s, t, q);
+    if (r != Sign::Zero) return r;
+  }
+  return Sign::Zero;
+}
+
+#define SWEEPCDT_INSTANTIATE(D)                                                                  \
+  template Sign compare_circumcenters<D>(const Vertices<D + 1>&, const Vertices<D + 1>&);        \
+  template Sign compare_power<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex&); \
+  template Sign compare_power_tuples<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertices<D + 1>&);
+SWEEPCDT_INSTANTIATE(2)
+SWEEPCDT_INSTANTIATE(3)
+SWEEPCDT_INSTANTIATE(4)
+SWEEPCDT_INSTANTIATE(5)
+#undef SWEEPCDT_INSTANTIATE
+
+}  // namespace sweepcdt::predicates

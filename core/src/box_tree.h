@@ -1,0 +1,108 @@
+// BoxTree<D>: a static bounding-box hierarchy over axis-aligned boxes, for finding the pairs of
+// simplices whose boxes overlap (PLC checking, point location in validate()). Box coordinates are
+// the input doubles themselves, so overlap tests are exact comparisons.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace sweepcdt::detail {
+
+template <int D>
+struct Box {
+  std::array<double, D> lo, hi;
+
+  static Box of_points(const double* const* p, int count) {
+    Box b;
+    for (int k = 0; k < D; ++k) b.lo[k] = b.hi[k] = p[0][k];
+    for (int i = 1; i < count; ++i)
+      for (int k = 0; k < D; ++k) {
+        b.lo[k] = std::min(b.lo[k], p[i][k]);
+        b.hi[k] = std::max(b.hi[k], p[i][k]);
+      }
+    return b;
+  }
+  bool overlaps(const Box& o) const {
+    for (int k = 0; k < D; ++k)
+      if (hi[k] < o.lo[k] || o.hi[k] < lo[k]) return false;
+    return true;
+  }
+  void extend(const Box& o) {
+    for (int k = 0; k < D; ++k) {
+      lo[k] = std::min(lo[k], o.lo[k]);
+      hi[k] = std::max(hi[k], o.hi[k]);
+    }
+  }
+};
+
+template <int D>
+class BoxTree {
+ public:
+  explicit BoxTree(std::vector<Box<D>> boxes) : boxes_(std::move(boxes)), order_(boxes_.size()) {
+    std::iota(order_.begin(), order_.end(), 0u);
+    if (boxes_.empty()) return;
+    nodes_.push_back({});
+    build(0, 0, static_cast<uint32_t>(boxes_.size()));
+  }
+
+  // Calls visit(i) for every box i that overlaps `query`.
+  template <class Visit>
+  void for_each_overlap(const Box<D>& query, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      if (!node.box.overlaps(query)) continue;
+      if (node.left == kLeaf) {
+        for (uint32_t i = node.begin; i < node.end; ++i)
+          if (boxes_[order_[i]].overlaps(query)) visit(order_[i]);
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.left + 1);
+      }
+    }
+  }
+
+  const Box<D>& box(uint32_t i) const { return boxes_[i]; }
+
+ private:
+  static constexpr uint32_t kLeaf = 0xffffffffu;
+  static constexpr uint32_t kLeafSize = 4;
+  struct Node {
+    Box<D> box;
+    uint32_t begin = 0, end = 0, left = kLeaf;  // children: nodes left and left + 1
+  };
+
+  // Builds the subtree of order_[begin, end) with its root in nodes_[slot] (already allocated):
+  // median split of the box centres along the longest axis.
+  void build(uint32_t slot, uint32_t begin, uint32_t end) {
+    Box<D> bounds = boxes_[order_[begin]];
+    for (uint32_t i = begin + 1; i < end; ++i) bounds.extend(boxes_[order_[i]]);
+    nodes_[slot] = {bounds, begin, end, kLeaf};
+    if (end - begin <= kLeafSize) return;
+    int axis = 0;
+    for (int k = 1; k < D; ++k)
+      if (bounds.hi[k] - bounds.lo[k] > bounds.hi[axis] - bounds.lo[axis]) axis = k;
+    const uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                     [&](uint32_t a, uint32_t b) {
+                       return boxes_[a].lo[axis] / 2 + boxes_[a].hi[axis] / 2 <
+                              boxes_[b].lo[axis] / 2 + boxes_[b].hi[axis] / 2;
+                     });
+    const uint32_t left = static_cast<uint32_t>(nodes_.size());
+    nodes_.push_back({});
+    nodes_.push_back({});
+    nodes_[slot].left = left;
+    build(left, begin, mid);
+    build(left + 1, mid, end);
+  }
+
+  std::vector<Box<D>> boxes_;
+  std::vector<uint32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace sweepcdt::detail

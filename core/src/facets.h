@@ -1,0 +1,56 @@
+// Internal: the facets of a triangulation, grouped — the sorted list of (facet key, simplex, local
+// index) that compute_neighbors() and validate() pair up. Sorting instead of hashing keeps it simple
+// and deterministic: O(s log s).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sweepcdt/triangulation.h"
+
+namespace sweepcdt::detail {
+
+template <int D>
+using FacetKey = std::array<uint32_t, D>;  // sorted vertex ids
+
+template <int D>
+struct FacetEntry {
+  FacetKey<D> key;
+  uint32_t simplex;
+  uint32_t local;  // the facet is opposite this local vertex
+};
+
+template <int D>
+FacetKey<D> facet_key(const uint32_t* simplex, int opposite) {
+  FacetKey<D> key;
+  for (int i = 0, k = 0; i <= D; ++i)
+    if (i != opposite) key[k++] = simplex[i];
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+template <int D>
+std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri) {
+  std::vector<FacetEntry<D>> facets;
+  facets.reserve(tri.num_simplices() * (D + 1));
+  for (uint32_t t = 0; t < tri.num_simplices(); ++t)
+    for (int i = 0; i <= D; ++i) facets.push_back({facet_key<D>(tri.simplex(t), i), t, static_cast<uint32_t>(i)});
+  std::sort(facets.begin(), facets.end(), [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
+    return a.key != b.key ? a.key < b.key : a.simplex < b.simplex;
+  });
+  return facets;
+}
+
+// Calls group(begin, end) for each run of equal keys in sorted facets.
+template <int D, class Group>
+void for_each_facet_group(const std::vector<FacetEntry<D>>& facets, Group&& group) {
+  for (std::size_t begin = 0; begin < facets.size();) {
+    std::size_t end = begin + 1;
+    while (end < facets.size() && facets[end].key == facets[begin].key) ++end;
+    group(begin, end);
+    begin = end;
+  }
+}
+
+}  // namespace sweepcdt::detail

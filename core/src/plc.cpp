@@ -1,0 +1,208 @@
+// Plc<D>::facet_bounded, find_problems() and check(): exact validation of a PLC (paper §1).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "box_tree.h"
+#include "simplex_intersection.h"
+#include "sweepcdt/plc.h"
+#include "sweepcdt/predicates/orientation.h"
+
+namespace sweepcdt {
+namespace {
+
+class ProblemList {
+ public:
+  explicit ProblemList(std::size_t limit) : limit_(limit) {}
+  void add(PlcProblemKind kind, std::vector<uint64_t> elements, const std::string& message) {
+    ++total_;
+    if (per_kind_[kind]++ < limit_) problems_.push_back({kind, std::move(elements), message});
+  }
+  uint64_t total() const { return total_; }
+  std::vector<PlcProblem> take() { return std::move(problems_); }
+
+ private:
+  std::size_t limit_;
+  uint64_t total_ = 0;
+  std::map<PlcProblemKind, std::size_t> per_kind_;
+  std::vector<PlcProblem> problems_;
+};
+
+std::string n(uint64_t i) { return std::to_string(i); }
+
+template <int D>
+std::array<const double*, D> simplex_coords(const Plc<D>& plc, std::size_t j) {
+  std::array<const double*, D> c;
+  for (int i = 0; i < D; ++i) c[i] = plc.point(plc.simplex(j)[i]);
+  return c;
+}
+
+template <int D>
+std::array<uint32_t, D> simplex_ids(const Plc<D>& plc, std::size_t j) {
+  std::array<uint32_t, D> ids;
+  std::copy_n(plc.simplex(j), D, ids.begin());
+  return ids;
+}
+
+// The simplex's vertices are affinely dependent iff every projection along an axis is degenerate.
+template <int D>
+bool degenerate(const std::array<const double*, D>& f) {
+  for (int drop = 0; drop < D; ++drop)
+    if (predicates::orient_projected<D>(f, drop) != predicates::Sign::Zero) return false;
+  return true;
+}
+
+// Sizes, finiteness, index ranges and repeated vertices. False if geometry cannot be examined.
+template <int D>
+bool check_structure(const Plc<D>& plc, ProblemList& problems) {
+  bool ok = true;
+  if (plc.points.size() % D != 0) {
+    problems.add(PlcProblemKind::BadShape, {}, "points: " + n(plc.points.size()) + " coordinates is not a multiple of D = " + n(D));
+    ok = false;
+  }
+  if (plc.simplices.size() % D != 0) {
+    problems.add(PlcProblemKind::BadShape, {}, "simplices: " + n(plc.simplices.size()) + " ids is not a multiple of D = " + n(D));
+    ok = false;
+  }
+  if (!plc.exterior.empty() && plc.exterior.size() != plc.num_simplices()) {
+    problems.add(PlcProblemKind::BadShape, {}, "exterior: " + n(plc.exterior.size()) + " notations for " + n(plc.num_simplices()) + " simplices");
+    ok = false;
+  }
+  if (!ok) return false;
+  for (std::size_t i = 0; i < plc.num_points(); ++i) {
+    const double* p = plc.point(static_cast<uint32_t>(i));
+    if (!std::all_of(p, p + D, [](double x) { return std::isfinite(x); })) {
+      problems.add(PlcProblemKind::NonFinitePoint, {i}, "point " + n(i) + " has a NaN or infinite coordinate");
+      ok = false;
+    }
+  }
+  for (std::size_t s = 0; s < plc.region_seeds.size(); ++s) {
+    const auto& p = plc.region_seeds[s].point;
+    if (!std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); }))
+      problems.add(PlcProblemKind::BadRegionSeed, {s}, "region seed " + n(s) + " has a NaN or infinite coordinate");
+  }
+  for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
+    auto ids = simplex_ids(plc, j);
+    for (uint32_t id : ids)
+      if (id >= plc.num_points()) {
+        problems.add(PlcProblemKind::IndexOutOfRange, {j}, "simplex " + n(j) + " names point " + n(id) + ", but there are only " + n(plc.num_points()));
+        ok = false;
+        break;
+      }
+    std::sort(ids.begin(), ids.end());
+    if (const auto repeated = std::adjacent_find(ids.begin(), ids.end()); repeated != ids.end()) {
+      problems.add(PlcProblemKind::RepeatedVertex, {j}, "simplex " + n(j) + " names point " + n(*repeated) + " twice");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+template <int D>
+void check_duplicate_points(const Plc<D>& plc, ProblemList& problems) {
+  std::vector<uint32_t> order(plc.num_points());
+  std::iota(order.begin(), order.end(), 0u);
+  auto less = [&](uint32_t a, uint32_t b) {
+    return std::lexicographical_compare(plc.point(a), plc.point(a) + D, plc.point(b), plc.point(b) + D);
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const uint32_t a = order[i - 1], b = order[i];
+    if (std::equal(plc.point(a), plc.point(a) + D, plc.point(b)))
+      problems.add(PlcProblemKind::DuplicatePoints, {std::min(a, b), std::max(a, b)},
+                   "points " + n(std::min(a, b)) + " and " + n(std::max(a, b)) + " have equal coordinates");
+  }
+}
+
+// Marks degenerate and duplicate simplices (excluded from the intersection tests).
+template <int D>
+std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems) {
+  std::vector<char> usable(plc.num_simplices(), 1);
+  std::map<std::array<uint32_t, D>, std::size_t> seen;
+  for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
+    if (degenerate<D>(simplex_coords(plc, j))) {
+      problems.add(PlcProblemKind::DegenerateSimplex, {j}, "simplex " + n(j) + " is degenerate (its vertices are affinely dependent)");
+      usable[j] = 0;
+      continue;
+    }
+    auto ids = simplex_ids(plc, j);
+    std::sort(ids.begin(), ids.end());
+    const auto [it, inserted] = seen.emplace(ids, j);
+    if (!inserted) {
+      problems.add(PlcProblemKind::DuplicateSimplex, {it->second, j}, "simplices " + n(it->second) + " and " + n(j) + " have the same vertices");
+      usable[j] = 0;
+    }
+  }
+  return usable;
+}
+
+template <int D>
+void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems) {
+  std::vector<detail::Box<D>> boxes(plc.num_simplices());
+  for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(simplex_coords(plc, j).data(), D);
+  const detail::BoxTree<D> tree(boxes);
+
+  for (std::size_t j = 0; j < boxes.size(); ++j) {
+    if (!usable[j]) continue;
+    const auto a = simplex_coords(plc, j);
+    const auto ida = simplex_ids(plc, j);
+    tree.for_each_overlap(boxes[j], [&](uint32_t k) {
+      if (k <= j || !usable[k]) return;
+      if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
+        problems.add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
+    });
+  }
+
+  // Points that are vertices of no simplex must not lie on one either.
+  std::vector<char> used(plc.num_points(), 0);
+  for (uint32_t id : plc.simplices) used[id] = 1;
+  for (uint32_t i = 0; i < plc.num_points(); ++i) {
+    if (used[i]) continue;
+    const double* p = plc.point(i);
+    const detail::Box<D> box = detail::Box<D>::of_points(&p, 1);
+    tree.for_each_overlap(box, [&](uint32_t k) {
+      if (usable[k] && detail::point_in_simplex<D>(p, simplex_coords(plc, k)))
+        problems.add(PlcProblemKind::PointOnSimplex, {i, k}, "point " + n(i) + " lies on simplex " + n(k) + " but is not one of its vertices");
+    });
+  }
+}
+
+}  // namespace
+
+template <int D>
+bool Plc<D>::facet_bounded() const {
+  return std::any_of(exterior.begin(), exterior.end(), [](ExteriorSide e) { return e != ExteriorSide::None; });
+}
+
+template <int D>
+std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total) {
+  ProblemList problems(limit_per_kind);
+  if (check_structure(plc, problems)) {
+    check_duplicate_points(plc, problems);
+    const auto usable = check_simplex_shapes(plc, problems);
+    check_intersections(plc, usable, problems);
+  }
+  if (total) *total = problems.total();
+  return problems.take();
+}
+
+template <int D>
+void check(const Plc<D>& plc) {
+  uint64_t total = 0;
+  auto problems = find_problems(plc, 10, &total);
+  if (total > 0) throw PlcError(std::move(problems), total);
+}
+
+#define SWEEPCDT_INSTANTIATE(D)                                                                    \
+  template struct Plc<D>;                                                                          \
+  template std::vector<PlcProblem> find_problems<D>(const Plc<D>&, std::size_t, uint64_t*);       \
+  template void check<D>(const Plc<D>&);
+SWEEPCDT_INSTANTIATE(2)
+SWEEPCDT_INSTANTIATE(3)
+SWEEPCDT_INSTANTIATE(4)
+SWEEPCDT_INSTANTIATE(5)
+#undef SWEEPCDT_INSTANTIATE
+
+}  // namespace sweepcdt

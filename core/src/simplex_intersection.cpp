@@ -1,0 +1,178 @@
+// Orientation-based intersection tests for segments in E^2 and triangles in E^3.
+#include "simplex_intersection.h"
+
+#include <algorithm>
+
+#include "sweepcdt/predicates/orientation.h"
+
+namespace sweepcdt::detail {
+namespace {
+
+using predicates::Sign;
+using P = const double*;
+
+Sign orient2(P a, P b, P c) { return predicates::orient<2>({a, b, c}); }
+Sign orient3(P a, P b, P c, P d) { return predicates::orient<3>({a, b, c, d}); }
+
+// A collinear point c lies on the closed segment ab iff it is within ab's bounding box.
+bool on_segment_2d(P a, P b, P c) {
+  for (int k = 0; k < 2; ++k)
+    if (c[k] < std::min(a[k], b[k]) || c[k] > std::max(a[k], b[k])) return false;
+  return true;
+}
+
+bool segments_meet_2d(P p, P q, P a, P b) {
+  const Sign o1 = orient2(p, q, a), o2 = orient2(p, q, b), o3 = orient2(a, b, p), o4 = orient2(a, b, q);
+  if (o1 * o2 == Sign::Negative && o3 * o4 == Sign::Negative) return true;
+  return (o1 == Sign::Zero && on_segment_2d(p, q, a)) || (o2 == Sign::Zero && on_segment_2d(p, q, b)) ||
+         (o3 == Sign::Zero && on_segment_2d(a, b, p)) || (o4 == Sign::Zero && on_segment_2d(a, b, q));
+}
+
+// No mix of strictly positive and strictly negative signs.
+bool consistent(Sign a, Sign b, Sign c) {
+  const bool pos = a == Sign::Positive || b == Sign::Positive || c == Sign::Positive;
+  const bool neg = a == Sign::Negative || b == Sign::Negative || c == Sign::Negative;
+  return !(pos && neg);
+}
+
+bool point_in_triangle_2d(P p, P a, P b, P c) { return consistent(orient2(a, b, p), orient2(b, c, p), orient2(c, a, p)); }
+
+bool segment_meets_triangle_2d(P p, P q, P a, P b, P c) {
+  return point_in_triangle_2d(p, a, b, c) || point_in_triangle_2d(q, a, b, c) || segments_meet_2d(p, q, a, b) ||
+         segments_meet_2d(p, q, b, c) || segments_meet_2d(p, q, c, a);
+}
+
+// Coplanar work in E^3: drop an axis along which the triangle's plane projects one-to-one.
+struct PlaneProjection {
+  int drop;
+  std::array<double, 2> project(P p) const {
+    std::array<double, 2> r;
+    for (int k = 0, c = 0; k < 3; ++k)
+      if (k != drop) r[c++] = p[k];
+    return r;
+  }
+};
+
+PlaneProjection projection_of(P a, P b, P c) {
+  for (int drop = 0; drop < 3; ++drop)
+    if (predicates::orient_projected<3>({a, b, c}, drop) != Sign::Zero) return {drop};
+  return {2};  // unreachable for a non-degenerate triangle
+}
+
+// p coplanar with triangle abc.
+bool coplanar_point_in_triangle(P p, P a, P b, P c) {
+  const PlaneProjection pr = projection_of(a, b, c);
+  const auto p2 = pr.project(p), a2 = pr.project(a), b2 = pr.project(b), c2 = pr.project(c);
+  return point_in_triangle_2d(p2.data(), a2.data(), b2.data(), c2.data());
+}
+
+bool segment_meets_triangle_3d(P p, P q, P a, P b, P c) {
+  const Sign op = orient3(a, b, c, p), oq = orient3(a, b, c, q);
+  if (op == oq && op != Sign::Zero) return false;
+  if (op == Sign::Zero && oq == Sign::Zero) {
+    const PlaneProjection pr = projection_of(a, b, c);
+    const auto p2 = pr.project(p), q2 = pr.project(q), a2 = pr.project(a), b2 = pr.project(b), c2 = pr.project(c);
+    return segment_meets_triangle_2d(p2.data(), q2.data(), a2.data(), b2.data(), c2.data());
+  }
+  if (op == Sign::Zero) return coplanar_point_in_triangle(p, a, b, c);
+  if (oq == Sign::Zero) return coplanar_point_in_triangle(q, a, b, c);
+  return consistent(orient3(p, q, a, b), orient3(p, q, b, c), orient3(p, q, c, a));
+}
+
+template <int D>
+int shared_count(const std::array<uint32_t, D>& ida, const std::array<uint32_t, D>& idb) {
+  int n = 0;
+  for (uint32_t i : ida) n += std::count(idb.begin(), idb.end(), i) > 0;
+  return n;
+}
+
+// Reorders so that the shared vertices come first, in the same order in both.
+template <int D>
+void shared_first(std::array<P, D>& a, std::array<uint32_t, D>& ida, std::array<P, D>& b, std::array<uint32_t, D>& idb) {
+  int next = 0;
+  for (int i = 0; i < D; ++i) {
+    const auto it = std::find(idb.begin(), idb.end(), ida[i]);
+    if (it == idb.end()) continue;
+    const int j = static_cast<int>(it - idb.begin());
+    std::swap(a[next], a[i]);
+    std::swap(ida[next], ida[i]);
+    std::swap(b[next], b[j]);
+    std::swap(idb[next], idb[j]);
+    ++next;
+  }
+}
+
+bool improper_2d(std::array<P, 2> a, std::array<uint32_t, 2> ida, std::array<P, 2> b, std::array<uint32_t, 2> idb) {
+  const int shared = shared_count<2>(ida, idb);
+  if (shared == 0) return segments_meet_2d(a[0], a[1], b[0], b[1]);
+  if (shared == 2) return true;  // the same segment twice
+  shared_first<2>(a, ida, b, idb);
+  // Sharing an endpoint: improper iff collinear and pointing the same way (one contains the other's end).
+  if (orient2(a[0], a[1], b[1]) != Sign::Zero) return false;
+  return on_segment_2d(a[0], a[1], b[1]) || on_segment_2d(b[0], b[1], a[1]);
+}
+
+bool improper_3d(std::array<P, 3> a, std::array<uint32_t, 3> ida, std::array<P, 3> b, std::array<uint32_t, 3> idb) {
+  const int shared = shared_count<3>(ida, idb);
+  if (shared == 3) return true;
+  shared_first<3>(a, ida, b, idb);
+  switch (shared) {
+    case 0:  // any contact at all
+      return segment_meets_triangle_3d(a[0], a[1], b[0], b[1], b[2]) ||
+             segment_meets_triangle_3d(a[1], a[2], b[0], b[1], b[2]) ||
+             segment_meets_triangle_3d(a[2], a[0], b[0], b[1], b[2]) ||
+             segment_meets_triangle_3d(b[0], b[1], a[0], a[1], a[2]) ||
+             segment_meets_triangle_3d(b[1], b[2], a[0], a[1], a[2]) ||
+             segment_meets_triangle_3d(b[2], b[0], a[0], a[1], a[2]);
+    case 1:  // sharing vertex v = a[0] = b[0]: a contact away from v reaches an opposite edge
+      return segment_meets_triangle_3d(a[1], a[2], b[0], b[1], b[2]) ||
+             segment_meets_triangle_3d(b[1], b[2], a[0], a[1], a[2]);
+    default: {  // sharing edge a[0]a[1]: improper iff coplanar with both apexes on the same side
+      if (orient3(a[0], a[1], a[2], b[2]) != Sign::Zero) return false;
+      const PlaneProjection pr = projection_of(a[0], a[1], a[2]);
+      const auto u = pr.project(a[0]), v = pr.project(a[1]), x = pr.project(a[2]), y = pr.project(b[2]);
+      return orient2(u.data(), v.data(), x.data()) == orient2(u.data(), v.data(), y.data());
+    }
+  }
+}
+
+}  // namespace
+
+template <int D>
+bool improper_intersection(const std::array<const double*, D>& a, const std::array<uint32_t, D>& ida,
+                           const std::array<const double*, D>& b, const std::array<uint32_t, D>& idb) {
+  if constexpr (D == 2) return improper_2d(a, ida, b, idb);
+  else if constexpr (D == 3) return improper_3d(a, ida, b, idb);
+  else return improper_intersection_lp<D>(a, ida, b, idb);
+}
+
+template <int D>
+bool point_in_simplex(const double* p, const std::array<const double*, D>& f) {
+  if constexpr (D == 2) {
+    return orient2(f[0], f[1], p) == Sign::Zero && on_segment_2d(f[0], f[1], p);
+  } else if constexpr (D == 3) {
+    return orient3(f[0], f[1], f[2], p) == Sign::Zero && coplanar_point_in_triangle(p, f[0], f[1], f[2]);
+  } else {
+    // A point is a degenerate simplex: reuse the LP with p repeated.
+    std::array<const double*, D> q;
+    q.fill(p);
+    std::array<uint32_t, D> idq, idf;
+    for (int i = 0; i < D; ++i) idf[i] = static_cast<uint32_t>(i), idq[i] = static_cast<uint32_t>(D);
+    return improper_intersection_lp<D>(q, idq, f, idf);
+  }
+}
+
+template bool improper_intersection<2>(const std::array<P, 2>&, const std::array<uint32_t, 2>&,
+                                       const std::array<P, 2>&, const std::array<uint32_t, 2>&);
+template bool improper_intersection<3>(const std::array<P, 3>&, const std::array<uint32_t, 3>&,
+                                       const std::array<P, 3>&, const std::array<uint32_t, 3>&);
+template bool improper_intersection<4>(const std::array<P, 4>&, const std::array<uint32_t, 4>&,
+                                       const std::array<P, 4>&, const std::array<uint32_t, 4>&);
+template bool improper_intersection<5>(const std::array<P, 5>&, const std::array<uint32_t, 5>&,
+                                       const std::array<P, 5>&, const std::array<uint32_t, 5>&);
+template bool point_in_simplex<2>(const double*, const std::array<P, 2>&);
+template bool point_in_simplex<3>(const double*, const std::array<P, 3>&);
+template bool point_in_simplex<4>(const double*, const std::array<P, 4>&);
+template bool point_in_simplex<5>(const double*, const std::array<P, 5>&);
+
+}  // namespace sweepcdt::detail

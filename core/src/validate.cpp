@@ -1,0 +1,416 @@
+// validate(): exact check that a triangulation is the CDT of a PLC. What is checked and why it
+// suffices is documented in validate.h.
+#include "sweepcdt/validate.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "box_tree.h"
+#include "facets.h"
+#include "simplex_intersection.h"
+#include "sweepcdt/predicates/exact_sum.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
+
+namespace sweepcdt {
+namespace {
+
+using predicates::Sign;
+constexpr std::size_t kReportedPerCheck = 10;
+
+std::string n(uint64_t i) { return std::to_string(i); }
+
+template <int D>
+std::string ids_text(const uint32_t* ids, int count) {
+  std::string s = "(";
+  for (int i = 0; i < count; ++i) s += (i ? " " : "") + n(ids[i]);
+  return s + ")";
+}
+
+template <int D>
+class Validator {
+ public:
+  Validator(const Triangulation<D>& tri, const Plc<D>& plc) : tri_(tri), plc_(plc) {}
+
+  ValidationReport run(ValidationLevel level) {
+    if (!shapes() || !simplex_ids()) return std::move(report_);
+    orientation();
+    facets_ = detail::sorted_facets(tri_);
+    group_facets();
+    neighbors();
+    interior_facet_sides();
+    steiner_points();
+    constraints();
+    domain();
+    volume();
+    regions();
+    if (level == ValidationLevel::Full) locally_delaunay();
+    return std::move(report_);
+  }
+
+ private:
+  // One group of equal facets: entries [begin, end) of facets_.
+  struct Group {
+    std::size_t begin, end;
+    uint32_t constraint = kNone;  // the constraining simplex this facet lies in
+  };
+
+  void fail(const std::string& check, const std::string& detail) {
+    if (report_.counts[check]++ < kReportedPerCheck) report_.failures.push_back({check, detail});
+  }
+
+  predicates::Coords<D + 1> coords(uint32_t t) const {
+    predicates::Coords<D + 1> c;
+    for (int i = 0; i <= D; ++i) c[i] = tri_.point(tri_.simplex(t)[i]);
+    return c;
+  }
+  // The simplex t with its vertex `local` replaced by point p.
+  Sign orient_replaced(uint32_t t, uint32_t local, const double* p) const {
+    auto c = coords(t);
+    c[local] = p;
+    return predicates::orient<D>(c);
+  }
+  std::array<const double*, D> constraint_coords(std::size_t j) const {
+    std::array<const double*, D> c;
+    for (int i = 0; i < D; ++i) c[i] = tri_.point(plc_.simplex(j)[i]);
+    return c;
+  }
+  std::string simplex_text(uint32_t t) const { return "simplex " + n(t) + " " + ids_text<D>(tri_.simplex(t), D + 1); }
+  std::string facet_text(const Group& g) const { return "facet " + ids_text<D>(facets_[g.begin].key.data(), D); }
+  uint32_t apex(const detail::FacetEntry<D>& e) const { return tri_.simplex(e.simplex)[e.local]; }
+
+  bool shapes() {
+    bool ok = true;
+    auto require = [&](bool condition, const std::string& what) {
+      if (!condition) fail("shape", what), ok = false;
+    };
+    require(tri_.points.size() % D == 0, "points: size is not a multiple of D");
+    require(tri_.simplices.size() % (D + 1) == 0, "simplices: size is not a multiple of D+1");
+    require(tri_.neighbors.empty() || tri_.neighbors.size() == tri_.simplices.size(), "neighbors: size differs from simplices");
+    require(tri_.regions.empty() || tri_.regions.size() == tri_.num_simplices(), "regions: one per simplex expected");
+    require(tri_.num_input_points == plc_.num_points(), "num_input_points differs from the PLC's point count");
+    require(tri_.num_points() >= tri_.num_input_points &&
+                tri_.steiner_on.size() == tri_.num_points() - tri_.num_input_points,
+            "steiner_on: one entry per Steiner point expected");
+    if (!ok) return false;
+    if (!std::equal(plc_.points.begin(), plc_.points.end(), tri_.points.begin()))
+      fail("points", "the input points are not preserved exactly as the first num_input_points points");
+    return true;
+  }
+
+  bool simplex_ids() {
+    bool ok = true;
+    for (uint32_t t = 0; t < tri_.num_simplices(); ++t) {
+      std::array<uint32_t, D + 1> ids;
+      std::copy_n(tri_.simplex(t), D + 1, ids.begin());
+      if (std::any_of(ids.begin(), ids.end(), [&](uint32_t i) { return i >= tri_.num_points(); })) {
+        fail("simplex-ids", simplex_text(t) + " names a point that does not exist");
+        ok = false;
+        continue;
+      }
+      std::sort(ids.begin(), ids.end());
+      if (std::adjacent_find(ids.begin(), ids.end()) != ids.end()) fail("simplex-ids", simplex_text(t) + " repeats a vertex"), ok = false;
+    }
+    return ok;
+  }
+
+  void orientation() {
+    for (uint32_t t = 0; t < tri_.num_simplices(); ++t)
+      if (predicates::orient<D>(coords(t)) != Sign::Positive)
+        fail("orientation", simplex_text(t) + " is not positively oriented (inverted or flat)");
+  }
+
+  void group_facets() {
+    detail::for_each_facet_group<D>(facets_, [&](std::size_t begin, std::size_t end) {
+      groups_.push_back({begin, end});
+      if (end - begin > 2) fail("facet-multiplicity", facet_text(groups_.back()) + " is shared by " + n(end - begin) + " simplices");
+    });
+  }
+
+  void neighbors() {
+    if (tri_.neighbors.empty()) return;
+    std::vector<uint32_t> expected(tri_.simplices.size(), kNone);
+    for (const Group& g : groups_) {
+      if (g.end - g.begin != 2) continue;
+      const auto& a = facets_[g.begin];
+      const auto& b = facets_[g.begin + 1];
+      expected[(D + 1) * a.simplex + a.local] = (D + 1) * b.simplex + b.local;
+      expected[(D + 1) * b.simplex + b.local] = (D + 1) * a.simplex + a.local;
+    }
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      if (expected[k] != tri_.neighbors[k])
+        fail("neighbors", "neighbour " + n(k % (D + 1)) + " of " + simplex_text(static_cast<uint32_t>(k / (D + 1))) +
+                              " is " + n(tri_.neighbors[k]) + ", expected " + n(expected[k]));
+  }
+
+  void interior_facet_sides() {
+    for (const Group& g : groups_) {
+      if (g.end - g.begin != 2) continue;
+      const auto& a = facets_[g.begin];
+      const auto& b = facets_[g.begin + 1];
+      if (orient_replaced(a.simplex, a.local, tri_.point(apex(b))) != Sign::Negative)
+        fail("interior-facet-sides", facet_text(g) + ": simplices " + n(a.simplex) + " and " + n(b.simplex) + " are not on opposite sides");
+    }
+  }
+
+  // Steiner points must lie on the constraining simplex recorded for them.
+  void steiner_points() {
+    for (std::size_t k = 0; k < tri_.steiner_on.size(); ++k) {
+      const uint32_t c = tri_.steiner_on[k];
+      if (c == kNone) continue;
+      const double* p = tri_.point(static_cast<uint32_t>(tri_.num_input_points + k));
+      if (c >= plc_.num_simplices() || !detail::point_in_simplex<D>(p, constraint_coords(c)))
+        fail("steiner-points", "Steiner point " + n(tri_.num_input_points + k) + " is not on constraining simplex " + n(c));
+    }
+  }
+
+  const Group* find_group(const detail::FacetKey<D>& key) const {
+    const auto it = std::lower_bound(facets_.begin(), facets_.end(), key,
+                                     [](const detail::FacetEntry<D>& e, const detail::FacetKey<D>& k) { return e.key < k; });
+    if (it == facets_.end() || it->key != key) return nullptr;
+    const std::size_t index = static_cast<std::size_t>(it - facets_.begin());
+    const auto g = std::lower_bound(groups_.begin(), groups_.end(), index, [](const Group& gr, std::size_t i) { return gr.end <= i; });
+    return &*g;
+  }
+
+  void constraints() {
+    std::vector<std::vector<uint32_t>> steiner_on_constraint = steiner_points_by_constraint();
+    for (std::size_t j = 0; j < plc_.num_simplices(); ++j) {
+      detail::FacetKey<D> key;
+      std::copy_n(plc_.simplex(j), D, key.begin());
+      std::sort(key.begin(), key.end());
+      if (const Group* g = find_group(key)) {
+        const_cast<Group*>(g)->constraint = static_cast<uint32_t>(j);
+        continue;
+      }
+      if (steiner_on_constraint[j].empty() || !covered_by_facets(j, steiner_on_constraint[j]))
+        fail("constraints", "constraining simplex " + n(j) + " " + ids_text<D>(plc_.simplex(j), D) + " is not a union of facets");
+    }
+  }
+
+  // For each constraining simplex, the Steiner points lying on it (found geometrically, not trusted
+  // from steiner_on: a point on a shared edge lies on several constraints).
+  std::vector<std::vector<uint32_t>> steiner_points_by_constraint() const {
+    std::vector<std::vector<uint32_t>> on(plc_.num_simplices());
+    if (tri_.num_points() == tri_.num_input_points || plc_.num_simplices() == 0) return on;
+    std::vector<detail::Box<D>> boxes(plc_.num_simplices());
+    for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(constraint_coords(j).data(), D);
+    const detail::BoxTree<D> tree(std::move(boxes));
+    for (uint32_t v = tri_.num_input_points; v < tri_.num_points(); ++v) {
+      const double* p = tri_.point(v);
+      tree.for_each_overlap(detail::Box<D>::of_points(&p, 1), [&](uint32_t j) {
+        if (detail::point_in_simplex<D>(p, constraint_coords(j))) on[j].push_back(v);
+      });
+    }
+    return on;
+  }
+
+  // Facets whose vertices all lie on constraint j tile it iff their projected measures add up to its
+  // own (they cannot overlap once the other checks pass). Marks them as lying in j.
+  bool covered_by_facets(std::size_t j, const std::vector<uint32_t>& steiner) {
+    std::vector<uint32_t> on(plc_.simplex(j), plc_.simplex(j) + D);
+    on.insert(on.end(), steiner.begin(), steiner.end());
+    std::sort(on.begin(), on.end());
+    auto is_on = [&](uint32_t v) { return std::binary_search(on.begin(), on.end(), v); };
+    const auto c = constraint_coords(j);
+    int drop = 0;
+    while (drop < D && predicates::orient_projected<D>(c, drop) == Sign::Zero) ++drop;
+    predicates::ExactMeasureSum whole, parts;
+    whole.add_projected_measure<D>(c, drop);
+    for (Group& g : groups_) {
+      const auto& key = facets_[g.begin].key;
+      if (!std::all_of(key.begin(), key.end(), is_on)) continue;
+      std::array<const double*, D> f;
+      for (int i = 0; i < D; ++i) f[i] = tri_.point(key[i]);
+      parts.add_projected_measure<D>(f, drop);
+      g.constraint = static_cast<uint32_t>(j);
+    }
+    return whole.compare(parts) == Sign::Zero;
+  }
+
+  // Which side of constraint j the simplex of facet entry e is on: the sign of orient(constraint, apex).
+  Sign side_of_constraint(std::size_t j, const detail::FacetEntry<D>& e) const {
+    predicates::Coords<D + 1> c;
+    const auto f = constraint_coords(j);
+    std::copy(f.begin(), f.end(), c.begin());
+    c[D] = tri_.point(apex(e));
+    return predicates::orient<D>(c);
+  }
+
+  void domain() {
+    if (plc_.facet_bounded()) facet_bounded_domain();
+    else convex_hull_domain();
+  }
+
+  void facet_bounded_domain() {
+    for (const Group& g : groups_) {
+      const std::size_t count = g.end - g.begin;
+      const ExteriorSide ext = g.constraint == kNone ? ExteriorSide::None : plc_.exterior_of(g.constraint);
+      if (ext == ExteriorSide::None) {
+        if (count == 1)
+          fail("domain-boundary", facet_text(g) + " bounds the triangulation but is not an exterior-notated constraining simplex");
+        continue;
+      }
+      const Sign exterior_sign = ext == ExteriorSide::Positive ? Sign::Positive : Sign::Negative;
+      bool domain_side = false;
+      for (std::size_t k = g.begin; k < g.end; ++k) {
+        if (side_of_constraint(g.constraint, facets_[k]) == exterior_sign)
+          fail("domain-boundary", simplex_text(facets_[k].simplex) + " lies on the exterior side of constraining simplex " + n(g.constraint));
+        else
+          domain_side = true;
+      }
+      if (!domain_side) fail("domain-boundary", facet_text(g) + " of constraining simplex " + n(g.constraint) + " has no simplex on its domain side");
+    }
+    unused_points_outside();
+  }
+
+  // An input point that is no vertex must lie outside every simplex (closed).
+  void unused_points_outside() {
+    std::vector<char> used(tri_.num_points(), 0);
+    for (uint32_t v : tri_.simplices) used[v] = 1;
+    if (std::all_of(used.begin(), used.begin() + tri_.num_input_points, [](char u) { return u; })) return;
+    std::vector<detail::Box<D>> boxes(tri_.num_simplices());
+    for (uint32_t t = 0; t < boxes.size(); ++t) boxes[t] = detail::Box<D>::of_points(coords(t).data(), D + 1);
+    const detail::BoxTree<D> tree(std::move(boxes));
+    for (uint32_t v = 0; v < tri_.num_input_points; ++v) {
+      if (used[v]) continue;
+      const double* p = tri_.point(v);
+      bool inside = false;
+      tree.for_each_overlap(detail::Box<D>::of_points(&p, 1), [&](uint32_t t) {
+        bool in = true;
+        for (uint32_t i = 0; i <= D && in; ++i) in = orient_replaced(t, i, p) != Sign::Negative;
+        inside |= in;
+      });
+      if (inside) fail("unused-vertex", "input point " + n(v) + " lies in the triangulated domain but is not a vertex");
+    }
+  }
+
+  void convex_hull_domain() {
+    std::vector<char> used(tri_.num_points(), 0);
+    for (uint32_t v : tri_.simplices) used[v] = 1;
+    for (uint32_t v = 0; v < tri_.num_input_points; ++v)
+      if (!used[v]) fail("unused-vertex", "input point " + n(v) + " is not a vertex of the triangulation of its convex hull");
+
+    // The boundary must be a closed pseudo-manifold (two boundary facets per boundary ridge) that is
+    // locally convex at every ridge; with every input point a vertex, that makes it the hull boundary.
+    std::vector<const detail::FacetEntry<D>*> boundary;
+    for (const Group& g : groups_)
+      if (g.end - g.begin == 1) boundary.push_back(&facets_[g.begin]);
+    std::map<std::array<uint32_t, D - 1>, std::vector<std::size_t>> ridges;
+    for (std::size_t b = 0; b < boundary.size(); ++b)
+      for (int drop = 0; drop < D; ++drop) {
+        std::array<uint32_t, D - 1> r;
+        for (int i = 0, k = 0; i < D; ++i)
+          if (i != drop) r[k++] = boundary[b]->key[i];
+        ridges[r].push_back(b);
+      }
+    for (const auto& [ridge, faces] : ridges) {
+      if (faces.size() != 2) {
+        fail("domain-boundary", "a boundary ridge " + ids_text<D>(ridge.data(), D - 1) + " has " + n(faces.size()) + " boundary facets, not 2");
+        continue;
+      }
+      for (int k = 0; k < 2; ++k) {
+        const auto* f = boundary[faces[k]];
+        const auto* other = boundary[faces[1 - k]];
+        for (uint32_t v : other->key)
+          if (!std::binary_search(f->key.begin(), f->key.end(), v) &&
+              orient_replaced(f->simplex, f->local, tri_.point(v)) == Sign::Negative)
+            fail("domain-boundary", "the boundary is not convex at ridge " + ids_text<D>(ridge.data(), D - 1));
+      }
+    }
+    // Small inputs: also test every point against every boundary facet directly.
+    if (boundary.size() * tri_.num_input_points <= 20'000'000)
+      for (const auto* f : boundary)
+        for (uint32_t v = 0; v < tri_.num_input_points; ++v)
+          if (orient_replaced(f->simplex, f->local, tri_.point(v)) == Sign::Negative) {
+            fail("domain-boundary", "input point " + n(v) + " lies outside boundary " + simplex_text(f->simplex));
+            break;
+          }
+  }
+
+  // Sum of simplex volumes = volume of the domain, computed from its boundary as a sum of cones from
+  // point 0 (divergence theorem): each boundary piece oriented with the domain on its positive side.
+  void volume() {
+    if (tri_.num_points() == 0) return;
+    predicates::ExactMeasureSum simplices, domain;
+    for (uint32_t t = 0; t < tri_.num_simplices(); ++t) simplices.add_volume<D>(coords(t));
+    const double* origin = tri_.point(0);
+    if (plc_.facet_bounded()) {
+      for (std::size_t j = 0; j < plc_.num_simplices(); ++j) {
+        const ExteriorSide ext = plc_.exterior_of(j);
+        if (ext == ExteriorSide::None) continue;
+        predicates::Coords<D + 1> cone;
+        const auto c = constraint_coords(j);
+        std::copy(c.begin(), c.end(), cone.begin());
+        cone[D] = origin;
+        domain.add_volume<D>(cone, ext == ExteriorSide::Positive);
+      }
+    } else {
+      for (const Group& g : groups_) {
+        if (g.end - g.begin != 1) continue;
+        auto cone = coords(facets_[g.begin].simplex);
+        cone[facets_[g.begin].local] = origin;
+        domain.add_volume<D>(cone);
+      }
+    }
+    if (simplices.compare(domain) != Sign::Zero)
+      fail("domain-volume", "the simplices' volume " + std::to_string(simplices.to_double()) +
+                                " differs from the domain's " + std::to_string(domain.to_double()) + " (times D!)");
+  }
+
+  void regions() {
+    if (tri_.regions.empty()) return;
+    for (const Group& g : groups_) {
+      if (g.end - g.begin != 2 || g.constraint != kNone) continue;
+      const uint32_t a = facets_[g.begin].simplex, b = facets_[g.begin + 1].simplex;
+      if (tri_.regions[a] != tri_.regions[b])
+        fail("regions", "simplices " + n(a) + " and " + n(b) + " share an unconstrained facet but have regions " +
+                            std::to_string(tri_.regions[a]) + " and " + std::to_string(tri_.regions[b]));
+    }
+  }
+
+  // Paper §1/§6: with the constraints present, a triangulation whose unconstrained interior facets
+  // are all locally Delaunay (perturbed) is the CDT.
+  void locally_delaunay() {
+    for (const Group& g : groups_) {
+      if (g.end - g.begin != 2 || g.constraint != kNone) continue;
+      const auto& a = facets_[g.begin];
+      const auto& b = facets_[g.begin + 1];
+      predicates::Vertices<D + 1> s;
+      for (int i = 0; i <= D; ++i) s[i] = {tri_.point(tri_.simplex(a.simplex)[i]), tri_.simplex(a.simplex)[i]};
+      const uint32_t q = apex(b);
+      if (predicates::inside_circumsphere<D>(s, {tri_.point(q), q}))
+        fail("locally-delaunay", facet_text(g) + " is not locally Delaunay: point " + n(q) + " is inside the circumsphere of " +
+                                     simplex_text(a.simplex));
+    }
+  }
+
+  const Triangulation<D>& tri_;
+  const Plc<D>& plc_;
+  ValidationReport report_;
+  std::vector<detail::FacetEntry<D>> facets_;
+  std::vector<Group> groups_;
+};
+
+}  // namespace
+
+std::string ValidationReport::summary() const {
+  if (ok()) return "valid";
+  std::string s;
+  for (const auto& f : failures) s += f.check + ": " + f.detail + "\n";
+  for (const auto& [check, count] : counts) s += check + ": " + std::to_string(count) + " failure" + (count == 1 ? "" : "s") + "\n";
+  return s;
+}
+
+template <int D>
+ValidationReport validate(const Triangulation<D>& tri, const Plc<D>& plc, ValidationLevel level) {
+  return Validator<D>(tri, plc).run(level);
+}
+
+template ValidationReport validate<2>(const Triangulation<2>&, const Plc<2>&, ValidationLevel);
+template ValidationReport validate<3>(const Triangulation<3>&, const Plc<3>&, ValidationLevel);
+template ValidationReport validate<4>(const Triangulation<4>&, const Plc<4>&, ValidationLevel);
+template ValidationReport validate<5>(const Triangulation<5>&, const Plc<5>&, ValidationLevel);
+
+}  // namespace sweepcdt

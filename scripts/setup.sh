@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package sweepcdt needs (idempotent), then configures and builds it.
+# Usage: scripts/setup.sh [--deps-only] [BUILD_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake g++ pkg-config
+  libgmp-dev            # exact predicate fallback
+  libgtest-dev googletest libgmock-dev   # tests
+  libbenchmark-dev      # bench/
+  libcgal-dev           # tests and benchmarks only (reference Delaunay/CDT, peer predicates)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+deps_only=0
+if [ "${1:-}" = "--deps-only" ]; then deps_only=1; shift; fi
+((deps_only)) && exit 0
+
+build_dir="${1:-build}"
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build_dir" -j "$(nproc)"

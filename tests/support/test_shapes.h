@@ -1,0 +1,58 @@
+// Small PLCs used across the tests, built by hand with exactly representable coordinates.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "sweepcdt/plc.h"
+
+namespace sweepcdt::fixtures {
+
+// The unit cube's surface: point i = (i&1, (i>>1)&1, (i>>2)&1), 12 triangles counterclockwise seen
+// from outside, so the inside is the positive side and every triangle is notated exterior Negative.
+inline Plc<3> unit_cube_surface(double scale = 1.0) {
+  Plc<3> plc;
+  for (int i = 0; i < 8; ++i)
+    plc.points.insert(plc.points.end(), {scale * (i & 1), scale * ((i >> 1) & 1), scale * ((i >> 2) & 1)});
+  plc.simplices = {0, 2, 3, 0, 3, 1,   4, 5, 7, 4, 7, 6,   0, 1, 5, 0, 5, 4,
+                   2, 6, 7, 2, 7, 3,   0, 4, 6, 0, 6, 2,   1, 3, 7, 1, 7, 5};
+  plc.exterior.assign(12, ExteriorSide::Negative);
+  return plc;
+}
+
+// The surface of the box [0,k]^3 with every face cut into k x k unit squares of two triangles:
+// 12 k^2 triangles, many exactly coplanar neighbours. Outward counterclockwise.
+inline Plc<3> grid_box_surface(int k) {
+  Plc<3> plc;
+  auto vertex = [&](int x, int y, int z) {
+    plc.points.insert(plc.points.end(), {double(x), double(y), double(z)});
+    return static_cast<uint32_t>(plc.points.size() / 3 - 1);
+  };
+  // Vertices are created per face; shared edge vertices would be duplicates, so index them by position.
+  std::vector<int64_t> index((k + 1) * (k + 1) * (k + 1), -1);
+  auto id = [&](int x, int y, int z) {
+    int64_t& slot = index[(x * (k + 1) + y) * (k + 1) + z];
+    if (slot < 0) slot = vertex(x, y, z);
+    return static_cast<uint32_t>(slot);
+  };
+  // For each axis and each side, the face's (u, v) directions are chosen so (u x v) points outward.
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side)
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b) {
+          auto at = [&](int da, int db) {
+            int c[3];
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            c[axis] = side * k;
+            c[u] = a + da;
+            c[v] = b + db;
+            return id(c[0], c[1], c[2]);
+          };
+          const uint32_t p00 = at(0, 0), p10 = at(1, 0), p11 = at(1, 1), p01 = at(0, 1);
+          if (side == 1) plc.simplices.insert(plc.simplices.end(), {p00, p10, p11, p00, p11, p01});
+          else plc.simplices.insert(plc.simplices.end(), {p00, p11, p10, p00, p01, p11});
+        }
+  plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);
+  return plc;
+}
+
+}  // namespace sweepcdt::fixtures
