@@ -66,6 +66,26 @@ class BoxTree {
     }
   }
 
+  // True as soon as pred(i) holds for a box i overlapping `query`.
+  template <class Pred>
+  bool any_overlap(const Box<D>& query, Pred&& pred) const {
+    if (nodes_.empty()) return false;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      if (!node.box.overlaps(query)) continue;
+      if (node.left == kLeaf) {
+        for (uint32_t i = node.begin; i < node.end; ++i)
+          if (boxes_[order_[i]].overlaps(query) && pred(order_[i])) return true;
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.left + 1);
+      }
+    }
+    return false;
+  }
+
   const Box<D>& box(uint32_t i) const { return boxes_[i]; }
 
  private:

@@ -14,6 +14,7 @@ const char* to_string(PlcProblemKind kind) {
     case PlcProblemKind::Intersection: return "intersection";
     case PlcProblemKind::PointOnSimplex: return "point-on-simplex";
     case PlcProblemKind::BadRegionSeed: return "bad-region-seed";
+    case PlcProblemKind::LowerDimensional: return "lower-dimensional";
   }
   return "unknown";
 }

@@ -1,5 +1,7 @@
 // Small PLCs used across the tests, built by hand with exactly representable coordinates.
 #pragma once
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +54,48 @@ inline Plc<3> grid_box_surface(int k) {
           else plc.simplices.insert(plc.simplices.end(), {p00, p11, p10, p00, p01, p11});
         }
   plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);
+  return plc;
+}
+
+}  // namespace sweepcdt::fixtures
+
+namespace sweepcdt::fixtures {
+
+// Appends a box surface [lo, hi]^3 (two triangles per face), its triangles counterclockwise seen
+// from outside when `outward`, else reversed; notated so that the box's inside (outward) or outside
+// (reversed: a cavity) is the domain.
+inline void add_box(Plc<3>& plc, const std::array<double, 3>& lo, const std::array<double, 3>& hi, bool outward) {
+  const uint32_t base = static_cast<uint32_t>(plc.num_points());
+  for (int i = 0; i < 8; ++i)
+    plc.points.insert(plc.points.end(), {(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]});
+  const uint32_t faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                              2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+  for (int t = 0; t < 12; ++t) {
+    uint32_t a = base + faces[3 * t], b = base + faces[3 * t + 1], c = base + faces[3 * t + 2];
+    if (!outward) std::swap(b, c);
+    plc.simplices.insert(plc.simplices.end(), {a, b, c});
+    plc.exterior.push_back(ExteriorSide::Negative);  // counterclockwise from the exterior side
+  }
+}
+
+// A triangular prism with its top rotated by `twist` radians about the axis (Schönhardt's polyhedron
+// for twist in (0, pi/3) with the quads split the "wrong" way): 6 points, 8 triangles, outward.
+inline Plc<3> twisted_prism(double twist) {
+  Plc<3> plc;
+  const double pi = 3.14159265358979323846;
+  for (int level = 0; level < 2; ++level)
+    for (int i = 0; i < 3; ++i) {
+      const double angle = 2 * pi * i / 3 + (level ? twist : 0.0);
+      plc.points.insert(plc.points.end(), {std::cos(angle), std::sin(angle), double(level)});
+    }
+  // bottom (0,1,2) seen from below counterclockwise, top (3,4,5); side quads i, i+1 split by the
+  // diagonal from bottom i to top i+1.
+  plc.simplices = {0, 2, 1, 3, 4, 5};
+  for (uint32_t i = 0; i < 3; ++i) {
+    const uint32_t j = (i + 1) % 3;
+    plc.simplices.insert(plc.simplices.end(), {i, j, 3 + j, i, 3 + j, 3 + i});
+  }
+  plc.exterior.assign(8, ExteriorSide::Negative);
   return plc;
 }
 

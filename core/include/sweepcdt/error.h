@@ -25,6 +25,7 @@ enum class PlcProblemKind {
   Intersection,       // two simplices meet other than in their shared face (elements: simplex, simplex)
   PointOnSimplex,     // a point lies on a simplex it is not a vertex of (elements: point, simplex)
   BadRegionSeed,      // non-finite region seed (element: seed)
+  LowerDimensional,   // the points lie in one hyperplane: there is nothing D-dimensional to triangulate
 };
 
 const char* to_string(PlcProblemKind kind);

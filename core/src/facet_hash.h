@@ -1,0 +1,22 @@
+// Internal: hashing of sorted vertex tuples (facet and ridge keys) for the gift-wrapping dictionary.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace sweepcdt::detail {
+
+struct TupleHash {
+  template <std::size_t N>
+  std::size_t operator()(const std::array<uint32_t, N>& key) const {
+    uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (uint32_t v : key) {
+      h ^= v;
+      h *= 0xff51afd7ed558ccdull;
+      h ^= h >> 33;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+}  // namespace sweepcdt::detail

@@ -1,0 +1,75 @@
+#include "regions.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_set>
+#include <vector>
+
+#include "facet_hash.h"
+#include "facets.h"
+#include "sweepcdt/predicates/orientation.h"
+
+namespace sweepcdt::detail {
+
+template <int D>
+void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
+  const std::size_t s = tri.num_simplices();
+  std::unordered_set<FacetKey<D>, TupleHash> constraints;
+  for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
+    FacetKey<D> k;
+    std::copy_n(plc.simplex(j), D, k.begin());
+    std::sort(k.begin(), k.end());
+    constraints.insert(k);
+  }
+  // Components across unconstrained facets (breadth-first).
+  std::vector<int32_t> component(s, -1);
+  int32_t components = 0;
+  std::vector<uint32_t> queue;
+  for (uint32_t start = 0; start < s; ++start) {
+    if (component[start] >= 0) continue;
+    component[start] = components;
+    queue.assign(1, start);
+    while (!queue.empty()) {
+      const uint32_t t = queue.back();
+      queue.pop_back();
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t nb = tri.neighbors[(D + 1) * t + i];
+        if (nb == kNone || component[nb / (D + 1)] >= 0) continue;
+        if (constraints.count(facet_key<D>(tri.simplex(t), i))) continue;
+        component[nb / (D + 1)] = components;
+        queue.push_back(nb / (D + 1));
+      }
+    }
+    ++components;
+  }
+  // Seeds name the component of a simplex that contains them (closed).
+  std::vector<int32_t> name(components, -1);
+  int32_t next = 0;
+  for (const auto& seed : plc.region_seeds) {
+    next = std::max(next, seed.region + 1);
+    for (uint32_t t = 0; t < s; ++t) {
+      bool inside = true;
+      for (int i = 0; i <= D && inside; ++i) {
+        predicates::Coords<D + 1> c;
+        for (int k = 0; k <= D; ++k) c[k] = tri.point(tri.simplex(t)[k]);
+        c[i] = seed.point.data();
+        inside = predicates::orient<D>(c) != predicates::Sign::Negative;
+      }
+      if (inside) {
+        name[component[t]] = seed.region;
+        break;
+      }
+    }
+  }
+  for (auto& n : name)
+    if (n < 0) n = next++;
+  tri.regions.resize(s);
+  for (uint32_t t = 0; t < s; ++t) tri.regions[t] = name[component[t]];
+}
+
+template void assign_regions<2>(Triangulation<2>&, const Plc<2>&);
+template void assign_regions<3>(Triangulation<3>&, const Plc<3>&);
+template void assign_regions<4>(Triangulation<4>&, const Plc<4>&);
+template void assign_regions<5>(Triangulation<5>&, const Plc<5>&);
+
+}  // namespace sweepcdt::detail

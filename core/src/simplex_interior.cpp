@@ -1,0 +1,61 @@
+#include "simplex_interior.h"
+
+#include <vector>
+
+#include "sweepcdt/predicates/orientation.h"
+
+namespace sweepcdt::detail {
+
+using predicates::Sign;
+
+template <int D>
+bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t) {
+  // Quick answer first: t lies on the closed outer side of a facet hyperplane of s (the usual case).
+  for (int facet = 0; facet <= D; ++facet) {
+    predicates::Coords<D + 1> plane = s;
+    const Sign inner = predicates::orient<D>(plane);  // s's own orientation, with s[facet] as apex
+    bool outside = true;
+    for (int k = 0; k < D && outside; ++k) {
+      plane[facet] = t[k];
+      outside = predicates::orient<D>(plane) != inner;
+    }
+    if (outside) return false;
+  }
+  // All distinct points (a vertex of t may coincide with one of s: same coordinates pointer or
+  // equal coordinates — equal points give equal orientations, which is all that matters here).
+  std::vector<const double*> points(s.begin(), s.end());
+  points.insert(points.end(), t.begin(), t.end());
+  const int n = static_cast<int>(points.size());
+
+  std::array<int, D> pick;
+  for (int i = 0; i < D; ++i) pick[i] = i;
+  for (;;) {
+    predicates::Coords<D + 1> plane;
+    for (int i = 0; i < D; ++i) plane[i] = points[pick[i]];
+    // Side of every point; the hyperplane must be spanned (some point off it: s spans E^D).
+    bool s_negative = false, s_positive = false, t_negative = false, t_positive = false;
+    for (int k = 0; k < n; ++k) {
+      plane[D] = points[k];
+      const Sign side = predicates::orient<D>(plane);
+      bool& negative = k <= D ? s_negative : t_negative;
+      bool& positive = k <= D ? s_positive : t_positive;
+      negative |= side == Sign::Negative;
+      positive |= side == Sign::Positive;
+    }
+    const bool spanned = s_negative || s_positive;
+    if (spanned && ((!s_positive && !t_negative) || (!s_negative && !t_positive))) return false;
+    // Next D-subset in lexicographic order.
+    int i = D - 1;
+    while (i >= 0 && pick[i] == n - D + i) --i;
+    if (i < 0) return true;
+    ++pick[i];
+    for (int j = i + 1; j < D; ++j) pick[j] = pick[j - 1] + 1;
+  }
+}
+
+template bool interior_meets<2>(const std::array<const double*, 3>&, const std::array<const double*, 2>&);
+template bool interior_meets<3>(const std::array<const double*, 4>&, const std::array<const double*, 3>&);
+template bool interior_meets<4>(const std::array<const double*, 5>&, const std::array<const double*, 4>&);
+template bool interior_meets<5>(const std::array<const double*, 6>&, const std::array<const double*, 5>&);
+
+}  // namespace sweepcdt::detail
