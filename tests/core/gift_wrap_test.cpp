@@ -11,6 +11,7 @@
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/validate.h"
+#include "off_reader.h"
 #include "test_shapes.h"
 
 using namespace sweepcdt;
@@ -211,5 +212,82 @@ TEST(GiftWrap, ProgressAndCancellation) {
   options.progress = [](const Progress&) { return false; };
   EXPECT_THROW(cdt(plc, options), CancelledError);
 }
+
+}  // namespace
+
+namespace {
+
+// Shared sample meshes (../shared/data). Missing files are reported as skipped, never passed.
+TEST(GiftWrapSharedData, Icosahedron) {
+  const auto plc = fixtures::read_off_surface(std::string(SWEEPCDT_SHARED_DATA) + "/off/icosahedron.off");
+  if (!plc) GTEST_SKIP() << "shared data not found at " << SWEEPCDT_SHARED_DATA;
+  ASSERT_TRUE(find_problems(*plc).empty());
+  expect_cdt(*plc);
+}
+
+// With constraints, D = 3..5: Shewchuk's companion theorem says a CDT exists when every ridge of
+// every constraining simplex is strongly Delaunay. So the constraints are built from ridges of the
+// Delaunay triangulation of random points (strongly Delaunay in general position) while not being
+// Delaunay facets themselves: a CDT must exist, differ from the Delaunay triangulation, and pass
+// validate().
+template <int D>
+void strongly_delaunay_constraints(int points, int constraints, int seeds) {
+  int changed = 0;
+  for (int seed = 0; seed < seeds; ++seed) {
+    std::mt19937_64 rng(9000 * D + seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    Plc<D> plc;
+    for (int i = 0; i < D * points; ++i) plc.points.push_back(u(rng));
+    const auto delaunay = cdt(plc);
+    std::set<std::vector<uint32_t>> ridges, facets;
+    for (std::size_t t = 0; t < delaunay.num_simplices(); ++t) {
+      std::vector<uint32_t> s(delaunay.simplex(t), delaunay.simplex(t) + D + 1);
+      std::sort(s.begin(), s.end());
+      for (int i = 0; i <= D; ++i) {
+        std::vector<uint32_t> f = s;
+        f.erase(f.begin() + i);
+        facets.insert(f);
+        for (int j = 0; j < D; ++j) {
+          std::vector<uint32_t> r = f;
+          r.erase(r.begin() + j);
+          ridges.insert(r);
+        }
+      }
+    }
+    std::vector<std::vector<uint32_t>> ridge_list(ridges.begin(), ridges.end());
+    std::uniform_int_distribution<std::size_t> pick_ridge(0, ridge_list.size() - 1);
+    for (int tries = 0; tries < 2000 && static_cast<int>(plc.num_simplices()) < constraints; ++tries) {
+      std::vector<uint32_t> c = ridge_list[pick_ridge(rng)];
+      c.push_back(static_cast<uint32_t>(rng() % points));
+      std::sort(c.begin(), c.end());
+      if (std::adjacent_find(c.begin(), c.end()) != c.end() || facets.count(c)) continue;
+      bool strongly_delaunay = true;
+      for (int j = 0; j < D && strongly_delaunay; ++j) {
+        std::vector<uint32_t> r = c;
+        r.erase(r.begin() + j);
+        strongly_delaunay = ridges.count(r) > 0;
+      }
+      if (!strongly_delaunay) continue;
+      plc.simplices.insert(plc.simplices.end(), c.begin(), c.end());
+      if (!find_problems(plc).empty()) plc.simplices.resize(plc.simplices.size() - D);
+    }
+    if (plc.num_simplices() == 0) continue;
+    Triangulation<D> tri;
+    try {
+      tri = cdt(plc);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "D=" << D << " seed " << seed << ": " << e.what();
+      continue;
+    }
+    const auto report = validate(tri, plc);
+    EXPECT_TRUE(report.ok()) << "D=" << D << " seed " << seed << "\n" << report.summary();
+    changed += simplex_set(tri) != simplex_set(delaunay);
+  }
+  EXPECT_GE(changed, seeds / 2) << "the constraints rarely mattered: this test checks little";
+}
+
+TEST(GiftWrap, StronglyDelaunayConstraints3D) { strongly_delaunay_constraints<3>(40, 8, 20); }
+TEST(GiftWrap, StronglyDelaunayConstraints4D) { strongly_delaunay_constraints<4>(24, 5, 6); }
+TEST(GiftWrap, StronglyDelaunayConstraints5D) { strongly_delaunay_constraints<5>(28, 3, 3); }
 
 }  // namespace
