@@ -1,5 +1,6 @@
 #include "simplex_interior.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "sweepcdt/predicates/orientation.h"
@@ -21,10 +22,20 @@ bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<
     }
     if (outside) return false;
   }
-  // All distinct points (a vertex of t may coincide with one of s: same coordinates pointer or
-  // equal coordinates — equal points give equal orientations, which is all that matters here).
+  // Each distinct point once, with its membership: a shared vertex (same pointer into the point
+  // array) constrains the sides of both simplices.
   std::vector<const double*> points(s.begin(), s.end());
-  points.insert(points.end(), t.begin(), t.end());
+  std::vector<char> in_s(D + 1, 1), in_t(D + 1, 0);
+  for (const double* p : t) {
+    const auto it = std::find(points.begin(), points.end(), p);
+    if (it != points.end()) {
+      in_t[it - points.begin()] = 1;
+    } else {
+      points.push_back(p);
+      in_s.push_back(0);
+      in_t.push_back(1);
+    }
+  }
   const int n = static_cast<int>(points.size());
 
   std::array<int, D> pick;
@@ -35,12 +46,11 @@ bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<
     // Side of every point; the hyperplane must be spanned (some point off it: s spans E^D).
     bool s_negative = false, s_positive = false, t_negative = false, t_positive = false;
     for (int k = 0; k < n; ++k) {
+      if (std::find(pick.begin(), pick.end(), k) != pick.end()) continue;  // on the plane by construction
       plane[D] = points[k];
       const Sign side = predicates::orient<D>(plane);
-      bool& negative = k <= D ? s_negative : t_negative;
-      bool& positive = k <= D ? s_positive : t_positive;
-      negative |= side == Sign::Negative;
-      positive |= side == Sign::Positive;
+      if (in_s[k]) s_negative |= side == Sign::Negative, s_positive |= side == Sign::Positive;
+      if (in_t[k]) t_negative |= side == Sign::Negative, t_positive |= side == Sign::Positive;
     }
     const bool spanned = s_negative || s_positive;
     if (spanned && ((!s_positive && !t_negative) || (!s_negative && !t_positive))) return false;

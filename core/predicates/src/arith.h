@@ -121,6 +121,21 @@ Sign filtered_sign(const Formula& formula) {
   return exact_sign(formula);
 }
 
+// The non-empty row subsets of an N-row matrix ordered by size, for the determinant below.
+struct RowSubset {
+  unsigned mask;
+  int size;
+};
+template <int N>
+constexpr std::array<RowSubset, (1u << N) - 1> subsets_by_size() {
+  std::array<RowSubset, (1u << N) - 1> subsets{};
+  std::size_t next = 0;
+  for (int size = 1; size <= N; ++size)
+    for (unsigned mask = 1; mask < (1u << N); ++mask)
+      if (std::popcount(mask) == size) subsets[next++] = {mask, size};
+  return subsets;
+}
+
 // det of an N x N row-major matrix by Laplace expansion, memoising the minors of the first k columns
 // over row subsets (bitmask -> minor): O(N 2^N) products instead of O(N!).
 template <int N, class T>
@@ -128,27 +143,26 @@ T determinant(const std::array<T, N * N>& a) {
   if constexpr (N == 1) {
     return a[0];
   } else {
+    static constexpr auto subsets = subsets_by_size<N>();
     std::array<T, (1u << N)> minor{};
     for (int r = 0; r < N; ++r) minor[1u << r] = a[r * N];
-    for (int k = 2; k <= N; ++k) {
-      for (unsigned mask = 1; mask < (1u << N); ++mask) {
-        if (std::popcount(mask) != k) continue;
-        if (k == N && mask != (1u << N) - 1) continue;
-        // Expand the k x k minor (rows of mask, columns 0..k-1) along its last column k-1.
-        T sum{};
-        int position = 0;
-        for (int r = 0; r < N; ++r) {
-          if (!((mask >> r) & 1u)) continue;
-          T term = a[r * N + k - 1] * minor[mask & ~(1u << r)];
-          const bool negative = ((position + k - 1) & 1) != 0;
-          if (position == 0)
-            sum = negative ? -term : term;
-          else
-            sum = negative ? sum - term : sum + term;
-          ++position;
-        }
-        minor[mask] = sum;
+    for (std::size_t m = N; m < subsets.size(); ++m) {
+      const unsigned mask = subsets[m].mask;
+      const int k = subsets[m].size;
+      // Expand the k x k minor (rows of mask, columns 0..k-1) along its last column k-1.
+      T sum{};
+      int position = 0;
+      for (int r = 0; r < N; ++r) {
+        if (!((mask >> r) & 1u)) continue;
+        T term = a[r * N + k - 1] * minor[mask & ~(1u << r)];
+        const bool negative = ((position + k - 1) & 1) != 0;
+        if (position == 0)
+          sum = negative ? -term : term;
+        else
+          sum = negative ? sum - term : sum + term;
+        ++position;
       }
+      minor[mask] = sum;
     }
     return minor[(1u << N) - 1];
   }
