@@ -70,6 +70,10 @@ bool check_structure(const Plc<D>& plc, ProblemList& problems) {
     problems.add(PlcProblemKind::BadShape, {}, "exterior: " + n(plc.exterior.size()) + " notations for " + n(plc.num_simplices()) + " simplices");
     ok = false;
   }
+  if (!plc.tags.empty() && plc.tags.size() != plc.num_simplices()) {
+    problems.add(PlcProblemKind::BadShape, {}, "tags: " + n(plc.tags.size()) + " tags for " + n(plc.num_simplices()) + " simplices");
+    ok = false;
+  }
   if (!ok) return false;
   for (std::size_t i = 0; i < plc.num_points(); ++i) {
     const double* p = plc.point(static_cast<uint32_t>(i));

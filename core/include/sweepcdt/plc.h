@@ -9,6 +9,8 @@
 //              triangles are counterclockwise seen from outside, the inside is the positive side, so
 //              every triangle is notated ExteriorSide::Negative.
 //   region_seeds: optional points naming the region (connected part of the domain) they lie in.
+//   tags:      empty, or m caller-defined ids, one per simplex (importers store the index of the input
+//              triangle each simplex came from, so outputs can carry face ids / patch tags).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -39,6 +41,7 @@ struct Plc {
   std::vector<uint32_t> simplices;
   std::vector<ExteriorSide> exterior;
   std::vector<RegionSeed<D>> region_seeds;
+  std::vector<uint32_t> tags;
 
   std::size_t num_points() const { return points.size() / D; }
   std::size_t num_simplices() const { return simplices.size() / D; }
