@@ -66,6 +66,26 @@ class BoxTree {
     }
   }
 
+  // Calls visit(i) for every box i that passes `test` (a box predicate that must also hold for any
+  // box enclosing a passing one, like "meets this ray"), pruning subtrees whose bounds fail it.
+  template <class Test, class Visit>
+  void for_each_passing(Test&& test, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      if (!test(node.box)) continue;
+      if (node.left == kLeaf) {
+        for (uint32_t i = node.begin; i < node.end; ++i)
+          if (test(boxes_[order_[i]])) visit(order_[i]);
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.left + 1);
+      }
+    }
+  }
+
   // True as soon as pred(i) holds for a box i overlapping `query`.
   template <class Pred>
   bool any_overlap(const Box<D>& query, Pred&& pred) const {

@@ -3,19 +3,74 @@
 // triangulation.
 #include "sweepcdt/cdt.h"
 
+#include <chrono>
+
 #include "gift_wrap.h"
 #include "regions.h"
+#include "sweep/sweep_cdt.h"
 #include "sweepcdt/validate.h"
 
 namespace sweepcdt {
 
+const char* to_string(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::SweepSphere: return "sweep-sphere";
+    case Algorithm::SweepPlane: return "sweep-plane";
+    case Algorithm::GiftWrap: return "giftwrap";
+  }
+  return "unknown";
+}
+
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+template <int D>
+Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
+  // The sweep plane needs the domain's left boundary: it has it for facet-bounded domains only.
+  stats.algorithm = options.algorithm == Algorithm::SweepPlane && !plc.facet_bounded() ? Algorithm::SweepSphere : options.algorithm;
+  switch (stats.algorithm) {
+    case Algorithm::GiftWrap:
+      return detail::gift_wrap(plc, options);
+    case Algorithm::SweepPlane:
+      return detail::sweep_cdt<D>(plc, std::nullopt, options, stats);
+    case Algorithm::SweepSphere: {
+      const auto delta = detail::seed_simplex(plc);
+      stats.seconds_setup += clock.lap();
+      return detail::sweep_cdt<D>(plc, delta, options, stats);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 template <int D>
 Triangulation<D> cdt(const Plc<D>& plc, const Options& options) {
+  CdtStatistics local;
+  CdtStatistics& stats = options.statistics ? *options.statistics : local;
+  stats = {};
+  Stopwatch clock;
   check(plc);
-  Triangulation<D> tri = detail::gift_wrap(plc, options);
+  stats.seconds_check = clock.lap();
+  Triangulation<D> tri = build(plc, options, stats, clock);
+  stats.seconds_build = clock.lap();
+  stats.simplices = tri.num_simplices();
   compute_neighbors(tri);
   detail::assign_regions(tri, plc);
   const ValidationReport report = validate(tri, plc);
+  stats.seconds_finish = clock.lap();
   if (!report.ok())
     throw NoCdtError("no CDT: the constructed triangulation fails validation (" + report.failures.front().check + ": " +
                          report.failures.front().detail + ")",

@@ -51,6 +51,13 @@ class GiftWrapper {
     constraints_ = std::make_unique<BoxTree<D>>(std::move(boxes));
   }
 
+  std::array<uint32_t, D + 1> first_seed() const {
+    if (!plc_.facet_bounded()) return plc_.num_simplices() ? seed_from_constraint(0) : unconstrained_seed();
+    std::size_t j = 0;
+    while (plc_.exterior_of(j) == ExteriorSide::None) ++j;
+    return seed_from_constraint(j);
+  }
+
   Triangulation<D> run() {
     if (plc_.facet_bounded()) {
       // Paper §2 seeds from one constraining simplex; a domain of several components (disjoint
@@ -238,6 +245,16 @@ Triangulation<D> gift_wrap(const Plc<D>& plc, const Options& options) {
   return GiftWrapper<D>(plc, options).run();
 }
 
+template <int D>
+std::array<uint32_t, D + 1> seed_simplex(const Plc<D>& plc) {
+  const Options options;
+  return GiftWrapper<D>(plc, options).first_seed();
+}
+
+template std::array<uint32_t, 3> seed_simplex<2>(const Plc<2>&);
+template std::array<uint32_t, 4> seed_simplex<3>(const Plc<3>&);
+template std::array<uint32_t, 5> seed_simplex<4>(const Plc<4>&);
+template std::array<uint32_t, 6> seed_simplex<5>(const Plc<5>&);
 template Triangulation<2> gift_wrap<2>(const Plc<2>&, const Options&);
 template Triangulation<3> gift_wrap<3>(const Plc<3>&, const Options&);
 template Triangulation<4> gift_wrap<4>(const Plc<4>&, const Options&);

@@ -21,7 +21,21 @@
 namespace sweepcdt {
 
 enum class Algorithm {
-  GiftWrap,  // paper §2: O(n_v n_f n_s); the reference the sweeps are tested against
+  SweepSphere,  // paper §3: SWEEPCDT with an expanding sphere; any domain (the default)
+  SweepPlane,   // paper §3: SWEEPCDT with a sweep plane; facet-bounded domains (a convex hull
+                // domain is swept with the sphere instead, and the statistics say so)
+  GiftWrap,     // paper §2: O(n_v n_f n_s); the reference the sweeps are tested against
+};
+
+const char* to_string(Algorithm algorithm);
+
+// What a run did, for callers who want to know (CLI --stats, benchmarks).
+struct CdtStatistics {
+  Algorithm algorithm = Algorithm::SweepSphere;  // the one that actually ran
+  uint64_t simplices = 0;
+  uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
+  uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
+  double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
 };
 
 struct Progress {
@@ -31,7 +45,8 @@ struct Progress {
 };
 
 struct Options {
-  Algorithm algorithm = Algorithm::GiftWrap;
+  Algorithm algorithm = Algorithm::SweepSphere;
+  CdtStatistics* statistics = nullptr;  // filled in when set
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;
 };

@@ -1,5 +1,6 @@
 #include "dyadic.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -48,10 +49,30 @@ Dyadic operator*(const Dyadic& a, const Dyadic& b) {
   return r;
 }
 
+// Rounded to nearest, ties to even (mpz_get_d would truncate). The mantissa is first rounded to the
+// number of bits the result can hold — 53, or fewer in the subnormal range — so the final scaling
+// is exact (or overflows to infinity, which is then the correctly rounded result).
 double Dyadic::to_double() const {
-  long exp = 0;
-  const double m = mpz_get_d_2exp(&exp, mantissa_.get_mpz_t());
-  return std::ldexp(m, static_cast<int>(exp + exponent_));
+  if (sign() == 0) return 0.0;
+  mpz_class magnitude = abs(mantissa_);
+  const long bits = static_cast<long>(mpz_sizeinbase(magnitude.get_mpz_t(), 2));
+  long exp = exponent_;
+  const long top = exp + bits - 1;  // exponent of the leading bit
+  const long keep = std::min(53L, top + 1075);  // 2^-1074 is the least subnormal bit
+  if (keep < bits) {
+    const long shift = bits - keep;
+    mpz_class quotient, remainder, half;
+    mpz_fdiv_q_2exp(quotient.get_mpz_t(), magnitude.get_mpz_t(), shift);
+    mpz_fdiv_r_2exp(remainder.get_mpz_t(), magnitude.get_mpz_t(), shift);
+    mpz_setbit(half.get_mpz_t(), shift - 1);
+    const int c = cmp(remainder, half);
+    if (c > 0 || (c == 0 && mpz_odd_p(quotient.get_mpz_t()))) ++quotient;
+    magnitude = quotient;
+    exp += shift;
+  }
+  const double m = magnitude.get_d();  // exact: at most 2^53
+  const double r = std::ldexp(m, static_cast<int>(std::clamp(exp, -100000L, 100000L)));
+  return mantissa_ < 0 ? -r : r;
 }
 
 }  // namespace sweepcdt::predicates::detail

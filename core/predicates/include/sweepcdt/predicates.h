@@ -11,3 +11,4 @@
 #include "sweepcdt/predicates/sweep_sides.h"
 #include "sweepcdt/predicates/vertex.h"
 #include "sweepcdt/predicates/exact_sum.h"
+#include "sweepcdt/predicates/ray_box.h"

@@ -1,0 +1,405 @@
+// SWEEPCDT (paper §3, Figure 13). Potential simplices — pairs of faces meeting at a reflex ridge,
+// and faces with the best vertex of their drop list — wait in a priority queue ordered by
+// circumcentre (plane) or power tuple (sphere), compared exactly (predicates/sweep_keys.h); each one
+// popped that is still valid is constrained Delaunay (Theorem 5) and is built.
+#include "sweep_cdt.h"
+
+#include <algorithm>
+#include <memory>
+#include <queue>
+#include <string>
+
+#include "../box_tree.h"
+#include "sweep_faces.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
+#include "sweepcdt/predicates/ray.h"
+#include "sweepcdt/predicates/ray_box.h"
+#include "sweepcdt/predicates/rotary.h"
+#include "sweepcdt/predicates/sweep_keys.h"
+
+namespace sweepcdt::detail {
+namespace {
+
+using namespace sweep;
+using predicates::Side;
+using predicates::Sign;
+
+template <int D>
+std::string ids_text(const uint32_t* ids, int count) {
+  std::string s = "(";
+  for (int i = 0; i < count; ++i) s += (i ? " " : "") + std::to_string(ids[i]);
+  return s + ")";
+}
+
+// Parity of the permutation that sorts `ids`: +1 even, -1 odd.
+template <std::size_t N>
+int sort_parity(std::array<uint32_t, N> ids) {
+  int parity = 1;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j)
+      if (ids[i] > ids[j]) parity = -parity;
+  return parity;
+}
+
+template <int D, class Frame>
+class Sweep {
+ public:
+  Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
+        const Options& options, CdtStatistics& stats)
+      : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats),
+        drop_next_(plc.num_points(), kNone), queue_(ItemOrder{this}) {}
+
+  Triangulation<D> run() {
+    add_constraint_faces();
+    if (delta_) add_seed(*delta_);
+    link_ridge_lists();
+    assign_drop_faces();
+    for (uint32_t f = 0; f < faces_.size(); ++f)
+      if (!faces_[f].built_front) new_face(f);
+    sweep();
+    Triangulation<D> tri;
+    tri.points = plc_.points;
+    tri.num_input_points = static_cast<uint32_t>(plc_.num_points());
+    tri.simplices = std::move(simplices_);
+    return tri;
+  }
+
+ private:
+  // A potential simplex: face f with face g (a pair at a reflex ridge) or with vertex g.
+  struct Item {
+    std::array<uint32_t, D + 1> s;  // its vertices, positively oriented
+    uint32_t f, g;
+    uint32_t f_version;
+    bool g_is_face;
+  };
+  struct ItemOrder {
+    const Sweep* sweep;
+    bool operator()(const Item& a, const Item& b) const { return sweep->key_less(b.s, a.s); }  // min-heap
+  };
+
+  // --- geometry ------------------------------------------------------------------------------
+  const double* point(uint32_t v) const { return plc_.point(v); }
+  predicates::Coords<D> coords(const FaceKey<D>& f) const {
+    predicates::Coords<D> c;
+    for (int i = 0; i < D; ++i) c[i] = point(f[i]);
+    return c;
+  }
+  Side side(const FaceKey<D>& f, uint32_t p) const { return predicates::side_of<D>(frame_, coords(f), point(p)); }
+  predicates::Vertices<D + 1> vertices(const std::array<uint32_t, D + 1>& s) const {
+    predicates::Vertices<D + 1> v;
+    for (int i = 0; i <= D; ++i) v[i] = {point(s[i]), s[i]};
+    return v;
+  }
+  bool key_less(const std::array<uint32_t, D + 1>& a, const std::array<uint32_t, D + 1>& b) const {
+    if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
+      return predicates::compare_circumcenters<D>(vertices(a), vertices(b)) == Sign::Negative;
+    else
+      return predicates::compare_power_tuples<D>(vertices(a), vertices(b), vertices(*delta_)) == Sign::Negative;
+  }
+  // The face's vertices plus `apex`, positively oriented (apex in front of f: its side is f.front).
+  std::array<uint32_t, D + 1> simplex_on_front(const Face<D>& f, uint32_t apex) const {
+    std::array<uint32_t, D + 1> s{};
+    std::copy(f.v.begin(), f.v.end(), s.begin());
+    s[D] = apex;
+    if (f.front < 0) std::swap(s[0], s[1]);
+    return s;
+  }
+  // The sign of orient(f sorted, x) for x in front of f.
+  int8_t front_sign(const FaceKey<D>& f) const {
+    return static_cast<int8_t>(-predicates::to_int(predicates::behind_sign<D>(frame_, coords(f))));
+  }
+
+  [[noreturn]] void no_cdt(const std::string& what, const uint32_t* ids, int count) const {
+    throw NoCdtError(std::string("sweep: ") + what, std::vector<uint32_t>(ids, ids + count));
+  }
+
+  // --- the structure ----------------------------------------------------------------------------
+  uint32_t add_face(const FaceKey<D>& key) {
+    const uint32_t id = static_cast<uint32_t>(faces_.size());
+    Face<D> f;
+    f.v = key;
+    f.front = front_sign(key);
+    faces_.push_back(f);
+    face_of_.emplace(key, id);
+    return id;
+  }
+
+  void add_constraint_faces() {
+    for (std::size_t j = 0; j < plc_.num_simplices(); ++j) {
+      std::array<uint32_t, D> own;
+      std::copy_n(plc_.simplex(j), D, own.begin());
+      FaceKey<D> key = own;
+      std::sort(key.begin(), key.end());
+      const uint32_t id = add_face(key);
+      Face<D>& f = faces_[id];
+      f.constraint = static_cast<uint32_t>(j);
+      const ExteriorSide ext = plc_.exterior_of(j);
+      if (ext == ExteriorSide::None) continue;
+      // The exterior side as a sign of orient(sorted key, x).
+      const int exterior = (ext == ExteriorSide::Positive ? 1 : -1) * sort_parity(own);
+      (exterior == f.front ? f.built_front : f.built_behind) = true;
+    }
+  }
+
+  // The sphere's seed Delta is behind all its faces (paper §3), so each gets its behind built.
+  void add_seed(const std::array<uint32_t, D + 1>& delta) {
+    simplices_.insert(simplices_.end(), delta.begin(), delta.end());
+    for (int i = 0; i <= D; ++i) {
+      FaceKey<D> key;
+      for (int k = 0, j = 0; k <= D; ++k)
+        if (k != i) key[j++] = delta[k];
+      std::sort(key.begin(), key.end());
+      const auto it = face_of_.find(key);
+      const uint32_t id = it != face_of_.end() ? it->second : add_face(key);
+      if (side(key, delta[i]) != Side::Behind) no_cdt("the seed simplex is not behind its face", key.data(), D);
+      if (faces_[id].built_behind) no_cdt("the seed simplex lies on the exterior side of a constraint", key.data(), D);
+      faces_[id].built_behind = true;
+    }
+  }
+
+  // Sorts every ridge's faces by rotary order around it and links them circularly.
+  void link_ridge_lists() {
+    std::unordered_map<RidgeKey<D>, std::vector<uint32_t>, TupleHash> around;
+    for (uint32_t f = 0; f < faces_.size(); ++f)
+      for (int i = 0; i < D; ++i) around[ridge_of<D>(faces_[f].v, i)].push_back(f);
+    for (auto& [ridge, list] : around) {
+      const auto r = ridge_coords(ridge);
+      const double* ref = point(apex_on(list[0], ridge));
+      std::sort(list.begin() + 1, list.end(), [&](uint32_t a, uint32_t b) {
+        return predicates::compare_rotary<D>(r, ref, point(apex_on(a, ridge)), point(apex_on(b, ridge))) == Sign::Negative;
+      });
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        const uint32_t a = list[k], b = list[(k + 1) % list.size()];
+        faces_[a].next[ridge_index<D>(faces_[a].v, ridge)] = b;
+        faces_[b].prev[ridge_index<D>(faces_[b].v, ridge)] = a;
+      }
+      ridge_anchor_[ridge] = list[0];
+    }
+  }
+
+  predicates::Coords<D - 1> ridge_coords(const RidgeKey<D>& r) const {
+    predicates::Coords<D - 1> c;
+    for (int i = 0; i < D - 1; ++i) c[i] = point(r[i]);
+    return c;
+  }
+  uint32_t apex_on(uint32_t face, const RidgeKey<D>& r) const { return faces_[face].v[ridge_index<D>(faces_[face].v, r)]; }
+
+  // Inserts new face h into the rotary list of its ridge i (linear search for its slot).
+  void link_into_ridge(uint32_t h, int i) {
+    const RidgeKey<D> ridge = ridge_of<D>(faces_[h].v, i);
+    const auto [it, fresh] = ridge_anchor_.emplace(ridge, h);
+    if (fresh) {
+      faces_[h].next[i] = faces_[h].prev[i] = h;
+      return;
+    }
+    const auto r = ridge_coords(ridge);
+    const double* x = point(faces_[h].v[i]);
+    uint32_t a = it->second;
+    // Find consecutive a -> b with x strictly between them (angles measured from a).
+    for (;;) {
+      const int ia = ridge_index<D>(faces_[a].v, ridge);
+      const uint32_t b = faces_[a].next[ia];
+      if (b == a || predicates::compare_rotary<D>(r, point(faces_[a].v[ia]), x, point(apex_on(b, ridge))) == Sign::Negative) {
+        const int ib = ridge_index<D>(faces_[b].v, ridge);
+        faces_[a].next[ia] = h;
+        faces_[h].prev[i] = a;
+        faces_[h].next[i] = b;
+        faces_[b].prev[ib] = h;
+        return;
+      }
+      a = b;
+      if (a == it->second) no_cdt("a face has no place around its ridge", faces_[h].v.data(), D);
+    }
+  }
+
+  // The neighbour of face f around its ridge i on f's front side.
+  uint32_t front_neighbour(uint32_t f, int i) const {
+    // orient(ridge sorted, apex, x) = (-1)^(D-1-i) orient(face sorted, x): moving v[i] to the end.
+    const int toward = ((D - 1 - i) % 2 == 0 ? 1 : -1) * faces_[f].front;
+    return toward > 0 ? faces_[f].next[i] : faces_[f].prev[i];
+  }
+
+  // --- drop faces (paper §3) --------------------------------------------------------------------
+  void push_drop(uint32_t face, uint32_t v) {
+    drop_next_[v] = faces_[face].drop;
+    faces_[face].drop = v;
+  }
+
+  // Every vertex but Delta's: the first initial face its ray strikes.
+  void assign_drop_faces() {
+    std::vector<Box<D>> boxes(faces_.size());
+    for (uint32_t f = 0; f < faces_.size(); ++f) boxes[f] = Box<D>::of_points(coords(faces_[f].v).data(), D);
+    const BoxTree<D> tree(std::move(boxes));
+    for (uint32_t v = 0; v < plc_.num_points(); ++v) {
+      if (delta_ && std::count(delta_->begin(), delta_->end(), v)) continue;
+      uint32_t first = kNone;
+      const auto meets = [&](const Box<D>& b) { return predicates::ray_meets_box<D>(frame_, point(v), b.lo.data(), b.hi.data()); };
+      tree.for_each_passing(meets, [&](uint32_t f) {
+        if (!predicates::ray_hits<D>(frame_, point(v), coords(faces_[f].v))) return;
+        if (first == kNone || predicates::compare_hits<D>(frame_, point(v), coords(faces_[f].v), coords(faces_[first].v)) == Sign::Negative)
+          first = f;
+      });
+      if (first != kNone) push_drop(first, v);
+    }
+  }
+
+  // --- NEWFACE (Figure 13) -----------------------------------------------------------------------
+  void new_face(uint32_t f) {
+    const Face<D>& face = faces_[f];
+    for (int i = 0; i < D; ++i) {
+      const uint32_t g = front_neighbour(f, i);
+      if (g == f || faces_[g].built_front) continue;
+      const RidgeKey<D> ridge = ridge_of<D>(face.v, i);
+      const uint32_t apex_g = apex_on(g, ridge);
+      // Reflex ridge: each face in front of the other.
+      if (side(face.v, apex_g) != Side::Front || side(faces_[g].v, face.v[i]) != Side::Front) continue;
+      push({simplex_on_front(face, apex_g), f, g, face.version, true});
+    }
+    if (face.drop != kNone) push({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false});
+  }
+
+  // The drop-list vertex inside the circumsphere of conv(f ∪ v') for every other v' (transitive).
+  uint32_t drop_candidate(uint32_t f) const {
+    const Face<D>& face = faces_[f];
+    uint32_t best = face.drop;
+    for (uint32_t v = drop_next_[best]; v != kNone; v = drop_next_[v])
+      if (predicates::inside_circumsphere<D>(vertices(simplex_on_front(face, best)), {point(v), v})) best = v;
+    return best;
+  }
+
+  void push(const Item& item) {
+    queue_.push(item);
+    ++stats_.queue_pushes;
+  }
+
+  // --- the sweep ---------------------------------------------------------------------------------
+  void sweep() {
+    while (!queue_.empty()) {
+      const Item item = queue_.top();
+      queue_.pop();
+      ++stats_.queue_pops;
+      if (!valid(item)) {
+        ++stats_.stale_pops;
+        continue;
+      }
+      build(item.s);
+      if (options_.progress && (stats_.queue_pops & 4095) == 0 &&
+          !options_.progress({"sweep", simplices_.size() / (D + 1), 0}))
+        throw CancelledError();
+    }
+  }
+
+  bool valid(const Item& item) const {
+    const Face<D>& f = faces_[item.f];
+    if (f.built_front || f.version != item.f_version) return false;
+    if (!item.g_is_face) return true;
+    if (faces_[item.g].built_front) return false;
+    // Still neighbours around their shared ridge (f's one vertex not in g marks it), nothing between.
+    for (int i = 0; i < D; ++i)
+      if (!std::count(faces_[item.g].v.begin(), faces_[item.g].v.end(), f.v[i])) return front_neighbour(item.f, i) == item.g;
+    return false;
+  }
+
+  void build(const std::array<uint32_t, D + 1>& s) {
+    simplices_.insert(simplices_.end(), s.begin(), s.end());
+    std::vector<uint32_t> finished, fresh;
+    for (int i = 0; i <= D; ++i) {
+      FaceKey<D> key;
+      for (int k = 0, j = 0; k <= D; ++k)
+        if (k != i) key[j++] = s[k];
+      std::sort(key.begin(), key.end());
+      const Side where = side(key, s[i]);  // which side of the face s lies on
+      const auto it = face_of_.find(key);
+      if (it != face_of_.end()) {
+        Face<D>& h = faces_[it->second];
+        bool& built = where == Side::Front ? h.built_front : h.built_behind;
+        if (built) no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " overlaps another on a face: it is not constrained Delaunay", s.data(), D + 1);
+        built = true;
+        if (where == Side::Front) finished.push_back(it->second);
+        continue;
+      }
+      if (where != Side::Behind)
+        no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)", s.data(), D + 1);
+      const uint32_t h = add_face(key);
+      faces_[h].built_behind = true;
+      fresh.push_back(h);
+    }
+    for (uint32_t h : fresh)
+      for (int i = 0; i < D; ++i) link_into_ridge(h, i);
+    redistribute(s, finished, fresh);
+    for (uint32_t h : fresh) new_face(h);
+  }
+
+  // Paper §3: the vertices of the faces s finished move to the new face their ray now strikes first.
+  void redistribute(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& finished, const std::vector<uint32_t>& fresh) {
+    std::vector<uint32_t> touched;
+    for (uint32_t f : finished) {
+      uint32_t v = faces_[f].drop;
+      faces_[f].drop = kNone;
+      while (v != kNone) {
+        const uint32_t next = drop_next_[v];
+        drop_next_[v] = kNone;
+        if (!std::count(s.begin(), s.end(), v)) {  // a vertex of s has entered the triangulation
+          ++stats_.drop_moves;
+          uint32_t target = kNone;
+          for (uint32_t h : fresh)
+            if (predicates::ray_hits<D>(frame_, point(v), coords(faces_[h].v))) target = h;
+          if (target == kNone) target = open_face_of_s_hit_by(s, v, touched);
+          if (target == kNone) no_cdt("vertex " + std::to_string(v) + " lost its drop face", s.data(), D + 1);
+          push_drop(target, v);
+        }
+        v = next;
+      }
+    }
+    for (uint32_t h : touched) {  // preexisting faces whose drop list grew: new candidate
+      ++faces_[h].version;
+      new_face(h);
+    }
+  }
+
+  // A preexisting face of s, unfinished in front, that the ray from v strikes (rare: see redistribute).
+  uint32_t open_face_of_s_hit_by(const std::array<uint32_t, D + 1>& s, uint32_t v, std::vector<uint32_t>& touched) {
+    for (int i = 0; i <= D; ++i) {
+      FaceKey<D> key;
+      for (int k = 0, j = 0; k <= D; ++k)
+        if (k != i) key[j++] = s[k];
+      std::sort(key.begin(), key.end());
+      const uint32_t h = face_of_.at(key);
+      if (faces_[h].built_front || !predicates::ray_hits<D>(frame_, point(v), coords(key))) continue;
+      if (!std::count(touched.begin(), touched.end(), h)) touched.push_back(h);
+      return h;
+    }
+    return kNone;
+  }
+
+  const Plc<D>& plc_;
+  const Frame frame_;
+  const std::optional<std::array<uint32_t, D + 1>> delta_;
+  const Options& options_;
+  CdtStatistics& stats_;
+  std::vector<Face<D>> faces_;
+  std::unordered_map<FaceKey<D>, uint32_t, TupleHash> face_of_;
+  std::unordered_map<RidgeKey<D>, uint32_t, TupleHash> ridge_anchor_;
+  std::vector<uint32_t> drop_next_;
+  std::priority_queue<Item, std::vector<Item>, ItemOrder> queue_;
+  std::vector<uint32_t> simplices_;
+};
+
+}  // namespace
+
+template <int D>
+Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uint32_t, D + 1>>& delta,
+                           const Options& options, CdtStatistics& stats) {
+  if (!delta) return Sweep<D, predicates::PlaneSweep>(plc, {}, delta, options, stats).run();
+  predicates::SphereSweep<D> frame;
+  for (int i = 0; i <= D; ++i) frame.delta[i] = plc.point((*delta)[i]);
+  return Sweep<D, predicates::SphereSweep<D>>(plc, frame, delta, options, stats).run();
+}
+
+template Triangulation<2> sweep_cdt<2>(const Plc<2>&, const std::optional<std::array<uint32_t, 3>>&, const Options&, CdtStatistics&);
+template Triangulation<3> sweep_cdt<3>(const Plc<3>&, const std::optional<std::array<uint32_t, 4>>&, const Options&, CdtStatistics&);
+template Triangulation<4> sweep_cdt<4>(const Plc<4>&, const std::optional<std::array<uint32_t, 5>>&, const Options&, CdtStatistics&);
+template Triangulation<5> sweep_cdt<5>(const Plc<5>&, const std::optional<std::array<uint32_t, 6>>&, const Options&, CdtStatistics&);
+
+}  // namespace sweepcdt::detail

@@ -1,0 +1,16 @@
+// SWEEPCDT (paper §3, Figure 13) with a sweep plane or a sweep sphere.
+#pragma once
+#include <array>
+#include <optional>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::detail {
+
+// Simplices of the CDT of a checked PLC. `delta` is the seed simplex for the sphere (required) and
+// must be empty for the plane, which needs a facet-bounded PLC. Throws NoCdtError, CancelledError.
+template <int D>
+Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uint32_t, D + 1>>& delta,
+                           const Options& options, CdtStatistics& stats);
+
+}  // namespace sweepcdt::detail

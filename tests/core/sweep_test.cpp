@@ -1,0 +1,119 @@
+// SWEEPCDT (sweep sphere and sweep plane) against gift-wrapping and brute force: identical simplex
+// sets on random and degenerate inputs in D = 2..5, facet-bounded shapes, and NoCdtError.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "brute_force_delaunay.h"
+#include "off_reader.h"
+#include "sweepcdt/cdt.h"
+#include "sweepcdt/validate.h"
+#include "test_shapes.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+template <int D>
+std::set<std::vector<uint32_t>> simplex_set(const Triangulation<D>& tri) {
+  std::set<std::vector<uint32_t>> set;
+  for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
+    std::vector<uint32_t> s(tri.simplex(t), tri.simplex(t) + D + 1);
+    std::sort(s.begin(), s.end());
+    set.insert(s);
+  }
+  return set;
+}
+
+template <int D>
+Triangulation<D> run(const Plc<D>& plc, Algorithm algorithm, CdtStatistics* stats = nullptr) {
+  Options options;
+  options.algorithm = algorithm;
+  options.statistics = stats;
+  return cdt(plc, options);
+}
+
+// All three algorithms give the same simplices, and validate() accepts them.
+template <int D>
+void expect_agreement(const Plc<D>& plc, const std::string& what) {
+  const auto reference = run(plc, Algorithm::GiftWrap);
+  for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane}) {
+    Triangulation<D> tri;
+    try {
+      tri = run(plc, a);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << what << " " << to_string(a) << ": " << e.what();
+      continue;
+    }
+    EXPECT_EQ(simplex_set(tri), simplex_set(reference)) << what << " " << to_string(a);
+    const auto report = validate(tri, plc);
+    EXPECT_TRUE(report.ok()) << what << " " << to_string(a) << "\n" << report.summary();
+  }
+}
+
+template <int D>
+void random_points(int count, int seeds, bool grid) {
+  for (int seed = 0; seed < seeds; ++seed) {
+    std::mt19937_64 rng(31 * D + seed);
+    std::uniform_int_distribution<int> coordinate(0, grid ? 2 : 1 << 30);
+    std::set<std::vector<double>> seen;
+    Plc<D> plc;
+    while (static_cast<int>(seen.size()) < count) {
+      std::vector<double> p(D);
+      for (auto& x : p) x = coordinate(rng);
+      if (seen.insert(p).second) plc.points.insert(plc.points.end(), p.begin(), p.end());
+    }
+    if (grid && fixtures::brute_force_delaunay<D>(plc.points).num_simplices() == 0) continue;  // flat
+    expect_agreement(plc, "D=" + std::to_string(D) + (grid ? " grid" : " random") + " seed " + std::to_string(seed));
+  }
+}
+
+TEST(Sweep, RandomPoints2D) { random_points<2>(200, 10, false); }
+TEST(Sweep, RandomPoints3D) { random_points<3>(200, 6, false); }
+TEST(Sweep, RandomPoints4D) { random_points<4>(50, 3, false); }
+TEST(Sweep, RandomPoints5D) { random_points<5>(24, 2, false); }
+TEST(Sweep, GridPoints2D) { random_points<2>(9, 20, true); }
+TEST(Sweep, GridPoints3D) { random_points<3>(14, 20, true); }
+TEST(Sweep, GridPoints4D) { random_points<4>(12, 10, true); }
+
+TEST(Sweep, FacetBoundedShapes) {
+  expect_agreement(fixtures::unit_cube_surface(), "unit cube");
+  Plc<3> cavity;
+  fixtures::add_box(cavity, {0, 0, 0}, {4, 4, 4}, true);
+  fixtures::add_box(cavity, {1, 1, 1}, {2, 3, 2}, false);
+  expect_agreement(cavity, "cube with cavity");
+  Plc<3> two;
+  fixtures::add_box(two, {0, 0, 0}, {1, 1, 1}, true);
+  fixtures::add_box(two, {3, 0, 0}, {4, 2, 1}, true);
+  expect_agreement(two, "two cubes");
+  Plc<2> holed;
+  holed.points = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 1, 3, 3, 3, 3, 1, 2, 0.5};
+  holed.simplices = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  holed.exterior.assign(8, ExteriorSide::Negative);
+  expect_agreement(holed, "square with hole");
+  if (const auto ico = fixtures::read_off_surface(std::string(SWEEPCDT_SHARED_DATA) + "/off/icosahedron.off"))
+    expect_agreement(*ico, "icosahedron");
+}
+
+TEST(Sweep, SchonhardtHasNoCdt) {
+  for (double twist : {0.0, 0.5})
+    for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane})
+      EXPECT_THROW(run(fixtures::twisted_prism(twist), a), NoCdtError) << to_string(a) << " twist " << twist;
+}
+
+TEST(Sweep, StatisticsAreReported) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  Plc<3> plc;
+  for (int i = 0; i < 3 * 500; ++i) plc.points.push_back(u(rng));
+  CdtStatistics stats;
+  const auto tri = run(plc, Algorithm::SweepPlane, &stats);
+  EXPECT_EQ(stats.algorithm, Algorithm::SweepSphere);  // a convex hull domain is swept by the sphere
+  EXPECT_EQ(stats.simplices, tri.num_simplices());
+  EXPECT_GE(stats.queue_pops, stats.simplices);
+  EXPECT_GT(stats.queue_pushes, 0u);
+}
+
+}  // namespace
