@@ -202,6 +202,7 @@ TEST(GiftWrap, ProgressAndCancellation) {
   for (int i = 0; i < 3 * 800; ++i) plc.points.push_back(u(rng));
   int calls = 0;
   Options options;
+  options.algorithm = Algorithm::GiftWrap;
   options.progress = [&](const Progress& p) {
     ++calls;
     EXPECT_LE(p.done, p.total);

@@ -48,7 +48,7 @@ class Sweep {
   Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
         const Options& options, CdtStatistics& stats)
       : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats),
-        drop_next_(plc.num_points(), kNone), queue_(ItemOrder{this}) {}
+        drop_next_(plc.num_points(), kNone), reached_(plc.num_points(), 0), queue_(ItemOrder{this}) {}
 
   Triangulation<D> run() {
     add_constraint_faces();
@@ -285,7 +285,7 @@ class Sweep {
       }
       build(item.s);
       if (options_.progress && (stats_.queue_pops & 4095) == 0 &&
-          !options_.progress({"sweep", simplices_.size() / (D + 1), 0}))
+          !options_.progress({"sweep", reached_count_, plc_.num_points()}))
         throw CancelledError();
     }
   }
@@ -303,6 +303,8 @@ class Sweep {
 
   void build(const std::array<uint32_t, D + 1>& s) {
     simplices_.insert(simplices_.end(), s.begin(), s.end());
+    for (uint32_t v : s)
+      if (!reached_[v]) reached_[v] = 1, ++reached_count_;
     std::vector<uint32_t> finished, fresh;
     for (int i = 0; i <= D; ++i) {
       FaceKey<D> key;
@@ -382,6 +384,8 @@ class Sweep {
   std::unordered_map<FaceKey<D>, uint32_t, TupleHash> face_of_;
   std::unordered_map<RidgeKey<D>, uint32_t, TupleHash> ridge_anchor_;
   std::vector<uint32_t> drop_next_;
+  std::vector<char> reached_;  // vertices of built simplices, for progress reports
+  uint64_t reached_count_ = 0;
   std::priority_queue<Item, std::vector<Item>, ItemOrder> queue_;
   std::vector<uint32_t> simplices_;
 };
