@@ -2,6 +2,7 @@
 // filters (the hot path of tetrahedralization) with constexpr bounds derived as in approx.h.
 #include "sweepcdt/predicates/orientation.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "arith.h"
@@ -49,6 +50,15 @@ constexpr double kOrient3Bound = 2.0 * 8 * detail::kUnitRoundoff;
 // (x - y) + (z - w): two more levels: 16.
 constexpr double kInsphere3Bound = 2.0 * 16 * detail::kUnitRoundoff;
 
+// max(|x|) over the arguments by plain comparisons (std::fmax is a libm call here). A NaN may be
+// dropped: the determinant is then NaN too, fails the filter, and the exact stage reports it.
+template <class... T>
+inline double largest_magnitude(T... x) {
+  double m = 0.0;
+  ((m = std::fabs(x) > m ? std::fabs(x) : m), ...);
+  return m;
+}
+
 inline bool admissible(double max_abs_difference) {
   return max_abs_difference <= detail::kMaxFilteredDifference;  // false for NaN/inf too
 }
@@ -61,7 +71,7 @@ Sign orient2(const Coords<3>& p) {
   const double bcx = p[1][0] - p[2][0], bcy = p[1][1] - p[2][1];
   const double left = acx * bcy, right = acy * bcx;
   const double det = left - right;
-  const double largest = std::fmax(std::fmax(std::fabs(acx), std::fabs(acy)), std::fmax(std::fabs(bcx), std::fabs(bcy)));
+  const double largest = largest_magnitude(acx, acy, bcx, bcy);
   if (admissible(largest)) {
     const double bound = kOrient2Bound * (std::fabs(left) + std::fabs(right)) + detail::kUnderflowAbsoluteBound;
     if (det > bound) return detail::count_filtered(), Sign::Positive;
@@ -86,10 +96,7 @@ Sign orient3(const Coords<4>& p) {
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-  const double largest = std::fmax(
-      std::fmax(std::fmax(std::fabs(adx), std::fabs(ady)), std::fmax(std::fabs(adz), std::fabs(bdx))),
-      std::fmax(std::fmax(std::fabs(bdy), std::fabs(bdz)),
-                std::fmax(std::fmax(std::fabs(cdx), std::fabs(cdy)), std::fabs(cdz))));
+  const double largest = largest_magnitude(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz);
   if (admissible(largest)) {
     const double bound = kOrient3Bound * permanent + detail::kUnderflowAbsoluteBound;
     if (det > bound) return detail::count_filtered(), Sign::Positive;
@@ -106,7 +113,7 @@ Sign insphere3(const Coords<5>& p) {
     dy[i] = p[i][1] - e[1];
     dz[i] = p[i][2] - e[2];
     lift[i] = dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i];
-    largest = std::fmax(largest, std::fmax(std::fabs(dx[i]), std::fmax(std::fabs(dy[i]), std::fabs(dz[i]))));
+    largest = std::max(largest, largest_magnitude(dx[i], dy[i], dz[i]));
   }
   // 2x2 minors of the x,y columns for rows (i, j).
   auto minor2 = [&](int i, int j) { return dx[i] * dy[j] - dx[j] * dy[i]; };

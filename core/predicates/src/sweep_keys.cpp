@@ -2,6 +2,7 @@
 #include "sweepcdt/predicates/sweep_keys.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -141,7 +142,41 @@ Dyadic lift_cofactor(const Vertices<D + 1>& s, const Vertex& q, uint32_t v) {
   return Dyadic();
 }
 
+// An enclosure of num / den from filtered values: |num - num^| <= e_num, |den - den^| <= e_den gives
+// |num/den - q^| <= (e_num + |q^| e_den) / (|den^| - e_den) + the rounding of q^ (see approx.h for
+// the filter bound); inflated generously to cover the rounding of this bound itself.
+KeyInterval ratio_interval(const detail::Approx& num, const detail::Approx& den, double shift = 0.0) {
+  const double u = detail::kUnitRoundoff;
+  const auto error = [&](const detail::Approx& a) {
+    return (2.0 * a.rounds * u) * a.mag + detail::kUnderflowAbsoluteBound;
+  };
+  const double e_num = error(num), e_den = error(den);
+  const double q = num.value / den.value;
+  const double margin = std::fabs(den.value) - e_den;
+  if (!(margin > 0) || !std::isfinite(q) || !std::isfinite(e_num)) return {-INFINITY, INFINITY};
+  const double e = ((e_num + std::fabs(q) * e_den) / margin) * (1 + 64 * u) + (std::fabs(q) + std::fabs(shift)) * 8 * u + 0x1p-1000;
+  return {shift + q - e, shift + q + e};
+}
+
 }  // namespace
+
+template <int D>
+KeyInterval power_interval(const Vertices<D + 1>& s, const double* q) {
+  detail::FilterArith a;
+  // Psi_q(s) = -L_s / Ds.
+  const auto l = lifted_det<D>(a, s, Vertex{q, 0});
+  const auto d = detail::orient_det<D>(a, coords_of(s));
+  return ratio_interval(-l, d);
+}
+
+template <int D>
+KeyInterval circumcenter_interval(const Vertices<D + 1>& s, int k) {
+  detail::FilterArith a;
+  // c_k = p_D[k] + N_k / (2 det A).
+  const Lifted<D, detail::FilterArith> l(a, s);
+  const auto nk = detail::determinant<D>(l.with_column(k, l.b));
+  return ratio_interval(nk, l.det + l.det, s[D].x[k]);
+}
 
 template <int D>
 Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
@@ -188,6 +223,8 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
 }
 
 #define SWEEPCDT_INSTANTIATE(D)                                                                  \
+  template KeyInterval power_interval<D>(const Vertices<D + 1>&, const double*);                  \
+  template KeyInterval circumcenter_interval<D>(const Vertices<D + 1>&, int);                     \
   template Sign compare_circumcenters<D>(const Vertices<D + 1>&, const Vertices<D + 1>&);        \
   template Sign compare_power<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex&); \
   template Sign compare_power_tuples<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertices<D + 1>&);

@@ -72,10 +72,11 @@ class Sweep {
     uint32_t f, g;
     uint32_t f_version;
     bool g_is_face;
+    predicates::KeyInterval key;  // encloses the first key entry: most comparisons stop here
   };
   struct ItemOrder {
     const Sweep* sweep;
-    bool operator()(const Item& a, const Item& b) const { return sweep->key_less(b.s, a.s); }  // min-heap
+    bool operator()(const Item& a, const Item& b) const { return sweep->key_less(b, a); }  // min-heap
   };
 
   // --- geometry ------------------------------------------------------------------------------
@@ -91,11 +92,25 @@ class Sweep {
     for (int i = 0; i <= D; ++i) v[i] = {point(s[i]), s[i]};
     return v;
   }
-  bool key_less(const std::array<uint32_t, D + 1>& a, const std::array<uint32_t, D + 1>& b) const {
+  // Circumcentre order (plane) or power-tuple order (sphere): the cached enclosures first, the same
+  // simplex queued twice next, the exact comparison last.
+  bool key_less(const Item& a, const Item& b) const {
+    if (a.key.hi < b.key.lo) return true;
+    if (b.key.hi < a.key.lo) return false;
+    auto sa = a.s, sb = b.s;
+    std::sort(sa.begin(), sa.end());
+    std::sort(sb.begin(), sb.end());
+    if (sa == sb) return false;
     if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
-      return predicates::compare_circumcenters<D>(vertices(a), vertices(b)) == Sign::Negative;
+      return predicates::compare_circumcenters<D>(vertices(a.s), vertices(b.s)) == Sign::Negative;
     else
-      return predicates::compare_power_tuples<D>(vertices(a), vertices(b), vertices(*delta_)) == Sign::Negative;
+      return predicates::compare_power_tuples<D>(vertices(a.s), vertices(b.s), vertices(*delta_)) == Sign::Negative;
+  }
+  predicates::KeyInterval key_interval(const std::array<uint32_t, D + 1>& s) const {
+    if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
+      return predicates::circumcenter_interval<D>(vertices(s), 0);
+    else
+      return predicates::power_interval<D>(vertices(s), point((*delta_)[0]));
   }
   // The face's vertices plus `apex`, positively oriented (apex in front of f: its side is f.front).
   std::array<uint32_t, D + 1> simplex_on_front(const Face<D>& f, uint32_t apex) const {
@@ -254,9 +269,9 @@ class Sweep {
       const uint32_t apex_g = apex_on(g, ridge);
       // Reflex ridge: each face in front of the other.
       if (side(face.v, apex_g) != Side::Front || side(faces_[g].v, face.v[i]) != Side::Front) continue;
-      push({simplex_on_front(face, apex_g), f, g, face.version, true});
+      push({simplex_on_front(face, apex_g), f, g, face.version, true, {}});
     }
-    if (face.drop != kNone) push({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false});
+    if (face.drop != kNone) push({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false, {}});
   }
 
   // The drop-list vertex inside the circumsphere of conv(f ∪ v') for every other v' (transitive).
@@ -268,7 +283,8 @@ class Sweep {
     return best;
   }
 
-  void push(const Item& item) {
+  void push(Item item) {
+    item.key = key_interval(item.s);
     queue_.push(item);
     ++stats_.queue_pushes;
   }
@@ -305,7 +321,7 @@ class Sweep {
     simplices_.insert(simplices_.end(), s.begin(), s.end());
     for (uint32_t v : s)
       if (!reached_[v]) reached_[v] = 1, ++reached_count_;
-    std::vector<uint32_t> finished, fresh;
+    std::vector<uint32_t> finished, fresh, behind;  // faces s finishes, creates, lies behind
     for (int i = 0; i <= D; ++i) {
       FaceKey<D> key;
       for (int k = 0, j = 0; k <= D; ++k)
@@ -318,7 +334,7 @@ class Sweep {
         bool& built = where == Side::Front ? h.built_front : h.built_behind;
         if (built) no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " overlaps another on a face: it is not constrained Delaunay", s.data(), D + 1);
         built = true;
-        if (where == Side::Front) finished.push_back(it->second);
+        (where == Side::Front ? finished : behind).push_back(it->second);
         continue;
       }
       if (where != Side::Behind)
@@ -326,15 +342,20 @@ class Sweep {
       const uint32_t h = add_face(key);
       faces_[h].built_behind = true;
       fresh.push_back(h);
+      behind.push_back(h);
     }
     for (uint32_t h : fresh)
       for (int i = 0; i < D; ++i) link_into_ridge(h, i);
-    redistribute(s, finished, fresh);
+    redistribute(s, finished, behind, fresh);
     for (uint32_t h : fresh) new_face(h);
   }
 
-  // Paper §3: the vertices of the faces s finished move to the new face their ray now strikes first.
-  void redistribute(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& finished, const std::vector<uint32_t>& fresh) {
+  // Paper §3: the vertices of the faces s finished move to the face their ray now strikes first: the
+  // face of s the ray enters s through. A ray crosses faces from front to behind only, so that is a
+  // face s lies behind — normally a new one ("find v's new drop face among F_new"); a preexisting
+  // one gets a new candidate.
+  void redistribute(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& finished,
+                    const std::vector<uint32_t>& behind, const std::vector<uint32_t>& fresh) {
     std::vector<uint32_t> touched;
     for (uint32_t f : finished) {
       uint32_t v = faces_[f].drop;
@@ -344,12 +365,11 @@ class Sweep {
         drop_next_[v] = kNone;
         if (!std::count(s.begin(), s.end(), v)) {  // a vertex of s has entered the triangulation
           ++stats_.drop_moves;
-          uint32_t target = kNone;
-          for (uint32_t h : fresh)
-            if (predicates::ray_hits<D>(frame_, point(v), coords(faces_[h].v))) target = h;
-          if (target == kNone) target = open_face_of_s_hit_by(s, v, touched);
+          const uint32_t target = entry_face(s, behind, v);
           if (target == kNone) no_cdt("vertex " + std::to_string(v) + " lost its drop face", s.data(), D + 1);
           push_drop(target, v);
+          if (!std::count(fresh.begin(), fresh.end(), target) && !std::count(touched.begin(), touched.end(), target))
+            touched.push_back(target);
         }
         v = next;
       }
@@ -360,18 +380,20 @@ class Sweep {
     }
   }
 
-  // A preexisting face of s, unfinished in front, that the ray from v strikes (rare: see redistribute).
-  uint32_t open_face_of_s_hit_by(const std::array<uint32_t, D + 1>& s, uint32_t v, std::vector<uint32_t>& touched) {
-    for (int i = 0; i <= D; ++i) {
-      FaceKey<D> key;
-      for (int k = 0, j = 0; k <= D; ++k)
-        if (k != i) key[j++] = s[k];
-      std::sort(key.begin(), key.end());
-      const uint32_t h = face_of_.at(key);
-      if (faces_[h].built_front || !predicates::ray_hits<D>(frame_, point(v), coords(key))) continue;
-      if (!std::count(touched.begin(), touched.end(), h)) touched.push_back(h);
-      return h;
+  // The face among `candidates` (faces of s that s lies behind) through which the ray from v enters
+  // s: one that v sees from outside s (one orientation each); the ray test decides among several.
+  uint32_t entry_face(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& candidates, uint32_t v) const {
+    uint32_t seen[D + 1];
+    int count = 0;
+    for (uint32_t h : candidates) {
+      // v is beyond h iff s with h's missing vertex replaced by v is negatively oriented.
+      predicates::Coords<D + 1> c;
+      for (int k = 0; k <= D; ++k) c[k] = std::count(faces_[h].v.begin(), faces_[h].v.end(), s[k]) ? point(s[k]) : point(v);
+      if (predicates::orient<D>(c) == Sign::Negative) seen[count++] = h;
     }
+    if (count == 1) return seen[0];
+    for (int k = 0; k < count; ++k)
+      if (predicates::ray_hits<D>(frame_, point(v), coords(faces_[seen[k]].v))) return seen[k];
     return kNone;
   }
 

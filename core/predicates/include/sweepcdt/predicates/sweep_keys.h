@@ -28,4 +28,20 @@ template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
                           const Vertices<D + 1>& delta);
 
+// Certified enclosures of the keys, to compare queue items cheaply: the exact (unperturbed) value
+// lies in [lo, hi]. When two enclosures are disjoint their order is the order of the perturbed keys
+// too (the perturbation is infinitesimal); otherwise compare exactly with the functions above.
+// lo = -inf, hi = +inf when the filter's preconditions fail (see approx.h).
+struct KeyInterval {
+  double lo, hi;
+};
+
+// Psi_q(s), the first entry of the power tuple for q = Delta_0.
+template <int D>
+KeyInterval power_interval(const Vertices<D + 1>& s, const double* q);
+
+// Coordinate k of the circumcentre of s.
+template <int D>
+KeyInterval circumcenter_interval(const Vertices<D + 1>& s, int k);
+
 }  // namespace sweepcdt::predicates
