@@ -1,0 +1,28 @@
+#include "sweepcdt/io/to_plc.h"
+
+#include "sweepcdt/io/read.h"
+
+namespace sweepcdt::io {
+
+Plc<3> to_plc(const Surface& surface, const SurfaceReport& report) {
+  report.throw_if_invalid();
+  Plc<3> plc;
+  plc.points = surface.points;
+  plc.simplices = surface.triangles;
+  const std::size_t m = surface.num_triangles();
+  plc.exterior.resize(m);
+  plc.tags.resize(m);
+  for (std::size_t t = 0; t < m; ++t) {
+    // Counterclockwise from outside the material: the material is on the positive side.
+    plc.exterior[t] = report.reverse[t] ? ExteriorSide::Positive : ExteriorSide::Negative;
+    plc.tags[t] = static_cast<uint32_t>(t);
+  }
+  return plc;
+}
+
+Plc<3> import_plc(const std::filesystem::path& file) {
+  const Surface surface = weld(read_soup(file));
+  return to_plc(surface, inspect(surface));
+}
+
+}  // namespace sweepcdt::io
