@@ -43,8 +43,13 @@ class BoxTree {
   explicit BoxTree(std::vector<Box<D>> boxes) : boxes_(std::move(boxes)), order_(boxes_.size()) {
     std::iota(order_.begin(), order_.end(), 0u);
     if (boxes_.empty()) return;
+    centres_.resize(boxes_.size());
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+      for (int k = 0; k < D; ++k) centres_[i][k] = boxes_[i].lo[k] / 2 + boxes_[i].hi[k] / 2;
+    nodes_.reserve(2 * boxes_.size() / kLeafSize + 1);
     nodes_.push_back({});
     build(0, 0, static_cast<uint32_t>(boxes_.size()));
+    centres_ = {};
   }
 
   // Calls visit(i) for every box i that overlaps `query`.
@@ -128,10 +133,7 @@ class BoxTree {
       if (bounds.hi[k] - bounds.lo[k] > bounds.hi[axis] - bounds.lo[axis]) axis = k;
     const uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](uint32_t a, uint32_t b) {
-                       return boxes_[a].lo[axis] / 2 + boxes_[a].hi[axis] / 2 <
-                              boxes_[b].lo[axis] / 2 + boxes_[b].hi[axis] / 2;
-                     });
+                     [&](uint32_t a, uint32_t b) { return centres_[a][axis] < centres_[b][axis]; });
     const uint32_t left = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back({});
     nodes_.push_back({});
@@ -143,6 +145,7 @@ class BoxTree {
   std::vector<Box<D>> boxes_;
   std::vector<uint32_t> order_;
   std::vector<Node> nodes_;
+  std::vector<std::array<double, D>> centres_;  // only while building
 };
 
 }  // namespace sweepcdt::detail

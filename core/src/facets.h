@@ -30,15 +30,25 @@ FacetKey<D> facet_key(const uint32_t* simplex, int opposite) {
   return key;
 }
 
+// Counting sort by the smallest vertex id, then small sorts within each bucket: O(s) for meshes.
 template <int D>
 std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri) {
-  std::vector<FacetEntry<D>> facets;
-  facets.reserve(tri.num_simplices() * (D + 1));
+  const std::size_t n = tri.num_points();
+  std::vector<uint32_t> start(n + 1, 0);
   for (uint32_t t = 0; t < tri.num_simplices(); ++t)
-    for (int i = 0; i <= D; ++i) facets.push_back({facet_key<D>(tri.simplex(t), i), t, static_cast<uint32_t>(i)});
-  std::sort(facets.begin(), facets.end(), [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
+    for (int i = 0; i <= D; ++i) ++start[facet_key<D>(tri.simplex(t), i)[0] + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<FacetEntry<D>> facets(start[n]);
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (uint32_t t = 0; t < tri.num_simplices(); ++t)
+    for (int i = 0; i <= D; ++i) {
+      const FacetKey<D> key = facet_key<D>(tri.simplex(t), i);
+      facets[fill[key[0]]++] = {key, t, static_cast<uint32_t>(i)};
+    }
+  const auto less = [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
     return a.key != b.key ? a.key < b.key : a.simplex < b.simplex;
-  });
+  };
+  for (std::size_t v = 0; v < n; ++v) std::sort(facets.begin() + start[v], facets.begin() + start[v + 1], less);
   return facets;
 }
 

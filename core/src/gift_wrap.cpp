@@ -154,6 +154,7 @@ class GiftWrapper {
     predicates::Vertices<D + 1> s;
     for (int i = 0; i < D; ++i) s[i] = {plc_.point(f[i]), f[i]};
     for (uint32_t w = 0; w < plc_.num_points(); ++w) {
+      if (std::count(f.begin(), f.end(), w)) continue;  // a vertex of f: flat, and exact zeros are slow
       if (predicates::orient<D>(with_apex(f, w)) != Sign::Positive) continue;
       if (best != kNone && !predicates::inside_circumsphere<D>(s, {plc_.point(w), w})) continue;
       if (!clean(f, w)) continue;

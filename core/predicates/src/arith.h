@@ -91,6 +91,29 @@ struct WideArith {
   T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
 };
 
+// Exact value of a formula as a Dyadic, computed in fixed-width integers when the dry run proves
+// they suffice. The formula must be homogeneous (every term of the dry run's degree): the integer
+// result is then the value scaled by 2^(-degree * lowest_bit), which the exponent undoes.
+template <class Formula>
+Dyadic exact_value(const Formula& formula) {
+  ScanArith scan;
+  const BitBound bound = formula(scan);
+  if (scan.finite && scan.lowest_bit == std::numeric_limits<int>::max()) return Dyadic();
+  const int input_bits = scan.highest_bit - scan.lowest_bit + 1;
+  if (scan.finite && input_bits <= 62) {
+    const int value_bits = bound.degree * (input_bits + 1) + bound.extra;
+    const long exponent = static_cast<long>(bound.degree) * scan.lowest_bit;
+    const auto run = [&](auto arith) {
+      const auto v = formula(arith);
+      return Dyadic::from_twos_complement(v.limb.data(), static_cast<int>(v.limb.size()), exponent);
+    };
+    if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
+    if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
+  }
+  ExactArith exact;
+  return formula(exact);
+}
+
 // Exact sign of a formula: fixed-width integers when the dry run proves they suffice, else dyadics.
 template <class Formula>
 Sign exact_sign(const Formula& formula) {

@@ -4,8 +4,27 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <vector>
 
 namespace sweepcdt::predicates::detail {
+
+Dyadic Dyadic::from_twos_complement(const uint64_t* limbs, int count, long exponent) {
+  const bool negative = (limbs[count - 1] >> 63) != 0;
+  std::vector<uint64_t> magnitude(limbs, limbs + count);
+  if (negative) {  // negate: invert and add one
+    unsigned __int128 carry = 1;
+    for (auto& x : magnitude) {
+      carry += static_cast<uint64_t>(~x);
+      x = static_cast<uint64_t>(carry);
+      carry >>= 64;
+    }
+  }
+  Dyadic r;
+  mpz_import(r.mantissa_.get_mpz_t(), static_cast<size_t>(count), -1, sizeof(uint64_t), 0, 0, magnitude.data());
+  if (negative) r.mantissa_ = -r.mantissa_;
+  r.exponent_ = exponent;
+  return r;
+}
 
 Dyadic::Dyadic(double d) {
   if (!std::isfinite(d)) throw std::invalid_argument("exact arithmetic on a non-finite coordinate");

@@ -18,15 +18,14 @@ ExactMeasureSum& ExactMeasureSum::operator=(const ExactMeasureSum& o) {
 
 template <int D>
 void ExactMeasureSum::add_volume(const Coords<D + 1>& p, bool subtract) {
-  detail::ExactArith exact;
-  const detail::Dyadic v = detail::orient_det<D>(exact, p);
+  // Homogeneous of degree D in the coordinate differences, as exact_value() requires.
+  const detail::Dyadic v = detail::exact_value([&](auto& a) { return detail::orient_det<D>(a, p); });
   impl_->sum = subtract ? impl_->sum - v : impl_->sum + v;
 }
 
 template <int D>
 void ExactMeasureSum::add_projected_measure(const Coords<D>& f, int drop) {
-  detail::ExactArith exact;
-  const detail::Dyadic v = detail::normal_component<D>(exact, f, drop);
+  const detail::Dyadic v = detail::exact_value([&](auto& a) { return detail::normal_component<D>(a, f, drop); });
   impl_->sum = v.sign() < 0 ? impl_->sum - v : impl_->sum + v;
 }
 

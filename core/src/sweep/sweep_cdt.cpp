@@ -87,6 +87,15 @@ class Sweep {
     return c;
   }
   Side side(const FaceKey<D>& f, uint32_t p) const { return predicates::side_of<D>(frame_, coords(f), point(p)); }
+  // The same for a face of the structure, from its stored front sign (no behind-side predicate).
+  Side side(const Face<D>& f, uint32_t p) const { return side_given_front(f.v, f.front, p); }
+  Side side_given_front(const FaceKey<D>& f, int8_t front, uint32_t p) const {
+    predicates::Coords<D + 1> c;
+    for (int i = 0; i < D; ++i) c[i] = point(f[i]);
+    c[D] = point(p);
+    const int o = predicates::to_int(predicates::orient<D>(c));
+    return o == 0 ? Side::On : (o == front ? Side::Front : Side::Behind);
+  }
   predicates::Vertices<D + 1> vertices(const std::array<uint32_t, D + 1>& s) const {
     predicates::Vertices<D + 1> v;
     for (int i = 0; i <= D; ++i) v[i] = {point(s[i]), s[i]};
@@ -130,11 +139,12 @@ class Sweep {
   }
 
   // --- the structure ----------------------------------------------------------------------------
-  uint32_t add_face(const FaceKey<D>& key) {
+  uint32_t add_face(const FaceKey<D>& key) { return add_face(key, front_sign(key)); }
+  uint32_t add_face(const FaceKey<D>& key, int8_t front) {
     const uint32_t id = static_cast<uint32_t>(faces_.size());
     Face<D> f;
     f.v = key;
-    f.front = front_sign(key);
+    f.front = front;
     faces_.push_back(f);
     face_of_.emplace(key, id);
     return id;
@@ -251,6 +261,7 @@ class Sweep {
       uint32_t first = kNone;
       const auto meets = [&](const Box<D>& b) { return predicates::ray_meets_box<D>(frame_, point(v), b.lo.data(), b.hi.data()); };
       tree.for_each_passing(meets, [&](uint32_t f) {
+        if (std::count(faces_[f].v.begin(), faces_[f].v.end(), v)) return;  // the ray starts on f
         if (!predicates::ray_hits<D>(frame_, point(v), coords(faces_[f].v))) return;
         if (first == kNone || predicates::compare_hits<D>(frame_, point(v), coords(faces_[f].v), coords(faces_[first].v)) == Sign::Negative)
           first = f;
@@ -268,7 +279,7 @@ class Sweep {
       const RidgeKey<D> ridge = ridge_of<D>(face.v, i);
       const uint32_t apex_g = apex_on(g, ridge);
       // Reflex ridge: each face in front of the other.
-      if (side(face.v, apex_g) != Side::Front || side(faces_[g].v, face.v[i]) != Side::Front) continue;
+      if (side(face, apex_g) != Side::Front || side(faces_[g], face.v[i]) != Side::Front) continue;
       push({simplex_on_front(face, apex_g), f, g, face.version, true, {}});
     }
     if (face.drop != kNone) push({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false, {}});
@@ -327,8 +338,9 @@ class Sweep {
       for (int k = 0, j = 0; k <= D; ++k)
         if (k != i) key[j++] = s[k];
       std::sort(key.begin(), key.end());
-      const Side where = side(key, s[i]);  // which side of the face s lies on
       const auto it = face_of_.find(key);
+      const int8_t front = it != face_of_.end() ? faces_[it->second].front : front_sign(key);
+      const Side where = side_given_front(key, front, s[i]);  // which side of the face s lies on
       if (it != face_of_.end()) {
         Face<D>& h = faces_[it->second];
         bool& built = where == Side::Front ? h.built_front : h.built_behind;
@@ -339,7 +351,7 @@ class Sweep {
       }
       if (where != Side::Behind)
         no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)", s.data(), D + 1);
-      const uint32_t h = add_face(key);
+      const uint32_t h = add_face(key, front);
       faces_[h].built_behind = true;
       fresh.push_back(h);
       behind.push_back(h);
