@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../box_tree.h"
+#include "../tuple_map.h"
 #include "sweep_faces.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
@@ -22,6 +23,7 @@ namespace sweepcdt::detail {
 namespace {
 
 using namespace sweep;
+constexpr uint32_t kAbsent = TupleMap<1>::kAbsent;
 using predicates::Side;
 using predicates::Sign;
 
@@ -175,8 +177,8 @@ class Sweep {
       for (int k = 0, j = 0; k <= D; ++k)
         if (k != i) key[j++] = delta[k];
       std::sort(key.begin(), key.end());
-      const auto it = face_of_.find(key);
-      const uint32_t id = it != face_of_.end() ? it->second : add_face(key);
+      const uint32_t found = face_of_.find(key);
+      const uint32_t id = found != kAbsent ? found : add_face(key);
       if (side(key, delta[i]) != Side::Behind) no_cdt("the seed simplex is not behind its face", key.data(), D);
       if (faces_[id].built_behind) no_cdt("the seed simplex lies on the exterior side of a constraint", key.data(), D);
       faces_[id].built_behind = true;
@@ -199,7 +201,7 @@ class Sweep {
         faces_[a].next[ridge_index<D>(faces_[a].v, ridge)] = b;
         faces_[b].prev[ridge_index<D>(faces_[b].v, ridge)] = a;
       }
-      ridge_anchor_[ridge] = list[0];
+      ridge_anchor_.emplace(ridge, list[0]);
     }
   }
 
@@ -213,14 +215,14 @@ class Sweep {
   // Inserts new face h into the rotary list of its ridge i (linear search for its slot).
   void link_into_ridge(uint32_t h, int i) {
     const RidgeKey<D> ridge = ridge_of<D>(faces_[h].v, i);
-    const auto [it, fresh] = ridge_anchor_.emplace(ridge, h);
+    const auto [anchor, fresh] = ridge_anchor_.emplace(ridge, h);
     if (fresh) {
       faces_[h].next[i] = faces_[h].prev[i] = h;
       return;
     }
     const auto r = ridge_coords(ridge);
     const double* x = point(faces_[h].v[i]);
-    uint32_t a = it->second;
+    uint32_t a = anchor;
     // Find consecutive a -> b with x strictly between them (angles measured from a).
     for (;;) {
       const int ia = ridge_index<D>(faces_[a].v, ridge);
@@ -234,7 +236,7 @@ class Sweep {
         return;
       }
       a = b;
-      if (a == it->second) no_cdt("a face has no place around its ridge", faces_[h].v.data(), D);
+      if (a == anchor) no_cdt("a face has no place around its ridge", faces_[h].v.data(), D);
     }
   }
 
@@ -338,15 +340,15 @@ class Sweep {
       for (int k = 0, j = 0; k <= D; ++k)
         if (k != i) key[j++] = s[k];
       std::sort(key.begin(), key.end());
-      const auto it = face_of_.find(key);
-      const int8_t front = it != face_of_.end() ? faces_[it->second].front : front_sign(key);
+      const uint32_t found = face_of_.find(key);
+      const int8_t front = found != kAbsent ? faces_[found].front : front_sign(key);
       const Side where = side_given_front(key, front, s[i]);  // which side of the face s lies on
-      if (it != face_of_.end()) {
-        Face<D>& h = faces_[it->second];
+      if (found != kAbsent) {
+        Face<D>& h = faces_[found];
         bool& built = where == Side::Front ? h.built_front : h.built_behind;
         if (built) no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " overlaps another on a face: it is not constrained Delaunay", s.data(), D + 1);
         built = true;
-        (where == Side::Front ? finished : behind).push_back(it->second);
+        (where == Side::Front ? finished : behind).push_back(found);
         continue;
       }
       if (where != Side::Behind)
@@ -415,8 +417,8 @@ class Sweep {
   const Options& options_;
   CdtStatistics& stats_;
   std::vector<Face<D>> faces_;
-  std::unordered_map<FaceKey<D>, uint32_t, TupleHash> face_of_;
-  std::unordered_map<RidgeKey<D>, uint32_t, TupleHash> ridge_anchor_;
+  TupleMap<D> face_of_;
+  TupleMap<D - 1> ridge_anchor_;
   std::vector<uint32_t> drop_next_;
   std::vector<char> reached_;  // vertices of built simplices, for progress reports
   uint64_t reached_count_ = 0;
