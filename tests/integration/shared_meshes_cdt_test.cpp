@@ -1,0 +1,80 @@
+// Every valid closed mesh of ../shared/data through the importer and all three CDT algorithms: they
+// must agree — identical, validate()-clean tetrahedralizations, or all NoCdtError (the PLC has no CDT
+// without Steiner points: issue 7). Gift-wrapping, O(n_v n_s), joins for the small meshes only.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "sweepcdt/cdt.h"
+#include "sweepcdt/io/to_plc.h"
+#include "sweepcdt/validate.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+const char* kValidMeshes[] = {
+    "off/femur.off",       "off/icosahedron.off",     "stl_ascii/gearwheel_ascii.stl", "stl_ascii/t13_data_ascii.stl",
+    "stl_binary/spot.stl", "stl_binary/torus.stl",    "stl_binary/thingi_1706459.stl", "gltf/Box.gltf",
+    "gltf/two_objects_inverse_materials.gltf",        "glb/moon.glb",                  "glb/cubevc.glb",
+    "drc/cube_att.drc",    "drc/knot1.drc"};
+
+std::set<std::vector<uint32_t>> simplex_set(const Triangulation<3>& tri) {
+  std::set<std::vector<uint32_t>> set;
+  for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
+    std::vector<uint32_t> s(tri.simplex(t), tri.simplex(t) + 4);
+    std::sort(s.begin(), s.end());
+    set.insert(s);
+  }
+  return set;
+}
+
+// The simplices, or nothing when the algorithm proves there is no CDT.
+std::optional<std::set<std::vector<uint32_t>>> run(const Plc<3>& plc, Algorithm algorithm, std::string& why) {
+  Options options;
+  options.algorithm = algorithm;
+  try {
+    const auto tri = cdt(plc, options);
+    const auto report = validate(tri, plc);
+    EXPECT_TRUE(report.ok()) << to_string(algorithm) << "\n" << report.summary();
+    return simplex_set(tri);
+  } catch (const NoCdtError& e) {
+    why = e.what();
+    return std::nullopt;
+  }
+}
+
+TEST(SharedMeshes, AllAlgorithmsAgree) {
+  const std::filesystem::path data(SWEEPCDT_SHARED_DATA);
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data not found at " << data;
+  int with_cdt = 0, tested = 0;
+  for (const char* name : kValidMeshes) {
+    const auto path = data / name;
+    if (!std::filesystem::exists(path)) {
+      ADD_FAILURE() << "missing shared mesh " << path;
+      continue;
+    }
+    const Plc<3> plc = io::import_plc(path);
+    std::string why_plane, why_sphere, why_gift;
+    const auto plane = run(plc, Algorithm::SweepPlane, why_plane);
+    const auto sphere = run(plc, Algorithm::SweepSphere, why_sphere);
+    EXPECT_EQ(plane.has_value(), sphere.has_value()) << name << ": " << why_plane << why_sphere;
+    if (plane && sphere) EXPECT_EQ(*plane, *sphere) << name;
+    if (plc.num_points() <= 1500) {
+      const auto gift = run(plc, Algorithm::GiftWrap, why_gift);
+      EXPECT_EQ(gift.has_value(), plane.has_value()) << name << ": " << why_gift << why_plane;
+      if (gift && plane) EXPECT_EQ(*gift, *plane) << name;
+    }
+    ++tested;
+    with_cdt += plane.has_value();
+    std::printf("  %-42s %6zu triangles: %s\n", name, plc.num_simplices(),
+                plane ? ("CDT, " + std::to_string(plane->size()) + " tetrahedra").c_str() : ("no CDT without Steiner points: " + why_plane.substr(0, 70)).c_str());
+  }
+  EXPECT_EQ(tested, static_cast<int>(std::size(kValidMeshes)));
+  EXPECT_GE(with_cdt, 3) << "too few shared meshes have a CDT for this test to mean much";
+}
+
+}  // namespace
