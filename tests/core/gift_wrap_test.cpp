@@ -166,6 +166,25 @@ TEST(GiftWrap, InternalWallWithDomainOnBothSides) {
   EXPECT_EQ(cdt(plc).num_simplices(), 2u);
 }
 
+// Non-manifold domains: two tetrahedra meeting at one vertex, and two meeting along one edge.
+TEST(GiftWrap, NonManifoldDomains) {
+  Plc<3> vertex;
+  vertex.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
+  fixtures::add_tetrahedron(vertex, {0, 1, 2, 3});
+  fixtures::add_tetrahedron(vertex, {0, 4, 5, 6});
+  ASSERT_TRUE(find_problems(vertex).empty());
+  expect_cdt(vertex, 2);
+  EXPECT_EQ(cdt(vertex).num_simplices(), 2u);
+
+  Plc<3> edge;
+  edge.points = {0, 0, 0, 0, 0, 1, 1, 0, 0.25, 1, 1, 0.75, -1, 0, 0.5, -1, -1, 0.25};
+  fixtures::add_tetrahedron(edge, {0, 1, 2, 3});
+  fixtures::add_tetrahedron(edge, {0, 1, 4, 5});
+  ASSERT_TRUE(find_problems(edge).empty());
+  expect_cdt(edge, 2);
+  EXPECT_EQ(cdt(edge).num_simplices(), 2u);
+}
+
 TEST(GiftWrap, PolygonWithHole2D) {
   Plc<2> plc;
   plc.points = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 1, 3, 3, 3, 3, 1, 2, 0.5};

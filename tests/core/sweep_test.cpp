@@ -93,6 +93,11 @@ TEST(Sweep, FacetBoundedShapes) {
   holed.simplices = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
   holed.exterior.assign(8, ExteriorSide::Negative);
   expect_agreement(holed, "square with hole");
+  Plc<3> vertex;  // two tetrahedra meeting at one vertex: a non-manifold domain
+  vertex.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
+  fixtures::add_tetrahedron(vertex, {0, 1, 2, 3});
+  fixtures::add_tetrahedron(vertex, {0, 4, 5, 6});
+  expect_agreement(vertex, "two tetrahedra sharing a vertex");
   if (const auto ico = fixtures::read_off_surface(std::string(SWEEPCDT_SHARED_DATA) + "/off/icosahedron.off"))
     expect_agreement(*ico, "icosahedron");
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sweepcdt/plc.h"
+#include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::fixtures {
 
@@ -97,6 +98,19 @@ inline Plc<3> twisted_prism(double twist) {
   }
   plc.exterior.assign(8, ExteriorSide::Negative);
   return plc;
+}
+
+// Appends tetrahedron `ids` (points already in plc) as four faces notated so that the domain is on
+// the tetrahedron's side of each.
+inline void add_tetrahedron(Plc<3>& plc, std::array<uint32_t, 4> ids) {
+  for (int i = 0; i < 4; ++i) {
+    std::array<uint32_t, 3> f;
+    for (int k = 0, j = 0; k < 4; ++k)
+      if (k != i) f[j++] = ids[k];
+    plc.simplices.insert(plc.simplices.end(), f.begin(), f.end());
+    const auto side = predicates::orient<3>({plc.point(f[0]), plc.point(f[1]), plc.point(f[2]), plc.point(ids[i])});
+    plc.exterior.push_back(side == predicates::Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
+  }
 }
 
 }  // namespace sweepcdt::fixtures
