@@ -59,6 +59,7 @@ void print_text(const SurfaceReport& r, std::ostream& out) {
   out << "self-intersecting pairs: " << (r.self_intersections_checked ? std::to_string(r.count(io::SurfaceProblemKind::SelfIntersection)) : "not checked") << "\n"
       << "bounding box:    " << box_text(r.box_min) << " - " << box_text(r.box_max) << "\n"
       << "valid:           " << yes_no(r.valid()) << "\n";
+  if (r.triangles == 0) out << "problems:        no triangles\n";
   for (int k = 0; k < io::kSurfaceProblemKinds; ++k)
     if (r.counts[k]) out << "problems:        " << r.counts[k] << " " << io::to_string(static_cast<io::SurfaceProblemKind>(k)) << "\n";
   for (const auto& p : r.problems) out << r.file << ": " << p.message << "\n";

@@ -179,5 +179,20 @@ TEST(Draco, PointCloudIsRefused) {
   expect_input_error("p.drc", drc, InputErrorKind::Unsupported, "point cloud");
 }
 
+TEST(Draco, StreamWithMetadataReads) {
+  // Named objects become Draco metadata, which precedes the connectivity counts checked before
+  // decoding (draco_decode.cpp skips it).
+  const std::string encoder = SWEEPCDT_DRACO_ENCODER;
+  if (encoder.empty() || encoder.ends_with("NOTFOUND")) GTEST_SKIP() << "draco_encoder (Debian package draco) is not installed";
+  testing::TempDir dir;
+  const auto obj = dir.write("named.obj", "o first\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\no second\nf 1 4 3\nf 2 3 4\n");
+  const auto drc = dir.path() / "named.drc";
+  const std::string cmd = encoder + " -i " + obj.string() + " -o " + drc.string() + " --metadata -qp 0 > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const SurfaceReport r = inspect(weld(read_soup(drc)));
+  EXPECT_EQ(r.triangles, 4u);
+  EXPECT_TRUE(r.valid());
+}
+
 }  // namespace
 }  // namespace sweepcdt::io
