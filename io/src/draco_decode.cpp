@@ -15,8 +15,7 @@ namespace {
 constexpr uint64_t kMaxElementsPerByte = 64;
 
 // Reads Draco's bitstream (draco/compression: header, optional metadata, connectivity header) just
-// far enough to find the face and vertex counts. Nothing if the layout is not the expected one:
-// libdraco then reports the error itself.
+// far enough to find the face and vertex counts; false if they cannot be found.
 class DracoHeader {
  public:
   explicit DracoHeader(std::string_view b) : b_(b) {}
@@ -25,17 +24,18 @@ class DracoHeader {
     uint8_t major, minor, type, method;
     uint16_t flags;
     if (!skip(5) || !u8(major) || !u8(minor) || !u8(type) || !u8(method) || !u16(flags)) return false;
-    const int version = major * 10 + minor;
+    const int version = major << 8 | minor;  // as DRACO_BITSTREAM_VERSION(major, minor)
     if (type != 1) return false;                                     // not a triangular mesh
-    if ((flags & 0x8000) && !(skip_attribute_metadata() && skip_metadata(0))) return false;
+    // Metadata (flag 0x8000) exists from bitstream 1.3 on; older decoders ignore the flag.
+    if (version >= 0x0103 && (flags & 0x8000) && !(skip_attribute_metadata() && skip_metadata(0))) return false;
     if (method == 0) {                                               // sequential
-      return version < 22 ? u32(faces) && u32(vertices) : varint(faces) && varint(vertices);
+      return version < 0x0202 ? u32(faces) && u32(vertices) : varint(faces) && varint(vertices);
     }
     uint8_t traversal;
     uint64_t new_vertices;
     if (method != 1 || !u8(traversal)) return false;                 // edgebreaker
-    if (version < 22 && !(version < 20 ? u32(new_vertices) : varint(new_vertices))) return false;
-    return version < 20 ? u32(vertices) && u32(faces) : varint(vertices) && varint(faces);
+    if (version < 0x0202 && !(version < 0x0200 ? u32(new_vertices) : varint(new_vertices))) return false;
+    return version < 0x0200 ? u32(vertices) && u32(faces) : varint(vertices) && varint(faces);
   }
 
  private:
@@ -102,18 +102,20 @@ class DracoHeader {
 }  // namespace
 
 std::unique_ptr<draco::Mesh> decode_draco_mesh(std::string_view bytes, const std::string& file, const Location& where) {
-  uint64_t faces = 0, vertices = 0;
-  const uint64_t limit = kMaxElementsPerByte * bytes.size() + 1024;
-  if (DracoHeader(bytes).read(faces, vertices) && (faces > limit || vertices > limit))
-    fail(InputErrorKind::AbsurdCount, file, where,
-         "the Draco stream announces " + std::to_string(faces) + " faces and " + std::to_string(vertices) +
-             " vertices in " + std::to_string(bytes.size()) + " bytes");
   draco::DecoderBuffer buffer;
   buffer.Init(bytes.data(), bytes.size());
   const auto type = draco::Decoder::GetEncodedGeometryType(&buffer);
   if (!type.ok()) fail(InputErrorKind::Syntax, file, where, "not a Draco stream: " + type.status().error_msg_string());
   if (type.value() == draco::POINT_CLOUD) fail(InputErrorKind::Unsupported, file, where, "a Draco point cloud, not a triangle mesh");
   if (type.value() != draco::TRIANGULAR_MESH) fail(InputErrorKind::Unsupported, file, where, "an unknown Draco geometry type");
+  uint64_t faces = 0, vertices = 0;
+  if (!DracoHeader(bytes).read(faces, vertices))
+    fail(InputErrorKind::Syntax, file, where, "the Draco stream ends or is malformed before its face and vertex counts");
+  const uint64_t limit = kMaxElementsPerByte * bytes.size() + 1024;
+  if (faces > limit || vertices > limit)
+    fail(InputErrorKind::AbsurdCount, file, where,
+         "the Draco stream announces " + std::to_string(faces) + " faces and " + std::to_string(vertices) +
+             " vertices in " + std::to_string(bytes.size()) + " bytes");
   draco::Decoder decoder;
   auto mesh = decoder.DecodeMeshFromBuffer(&buffer);
   if (!mesh.ok()) fail(InputErrorKind::Syntax, file, where, "Draco cannot decode the mesh: " + mesh.status().error_msg_string());

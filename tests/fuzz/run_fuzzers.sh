@@ -14,8 +14,8 @@ sanitizers="-fsanitize=address,undefined -fsanitize=fuzzer-no-link"
 # Undefined behaviour is fatal except for the known cases listed in ubsan.supp.
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$PWD/tests/fuzz/ubsan.supp"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
-  -DCMAKE_CXX_FLAGS="$sanitizers" -DSWEEPCDT_FUZZ=ON -DSWEEPCDT_BUILD_BENCH=OFF > build-fuzz.log
-cmake --build build-fuzz -j "$(nproc)" --target $(printf 'fuzz_%s ' "${targets[@]}") >> build-fuzz.log
+  -DCMAKE_CXX_FLAGS="$sanitizers" -DSWEEPCDT_FUZZ=ON -DSWEEPCDT_BUILD_BENCH=OFF > /dev/null
+cmake --build build-fuzz -j "$(nproc)" --target $(printf 'fuzz_%s ' "${targets[@]}") > build-fuzz/build.log
 
 data=../shared/data
 seed() {  # seed TARGET FILES...

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "sweepcdt/io/error.h"
 #include "sweepcdt/io/read.h"
 
@@ -16,7 +18,9 @@ class TempDir {
  public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() / ("sweepcdt_io_" + std::string(info->test_suite_name()) + "_" + info->name());
+    // The process id keeps concurrent runs of the same test (ctest -j runs the whole binary too) apart.
+    path_ = std::filesystem::temp_directory_path() /
+            ("sweepcdt_io_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
