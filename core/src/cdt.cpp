@@ -7,6 +7,7 @@
 
 #include "gift_wrap.h"
 #include "regions.h"
+#include "steiner/segment_recovery.h"
 #include "sweep/sweep_cdt.h"
 #include "sweepcdt/validate.h"
 
@@ -54,23 +55,17 @@ Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics&
   return {};
 }
 
-}  // namespace
 
+// Triangulates `plc` (already checked) and verifies the result.
 template <int D>
-Triangulation<D> cdt(const Plc<D>& plc, const Options& options) {
-  CdtStatistics local;
-  CdtStatistics& stats = options.statistics ? *options.statistics : local;
-  stats = {};
-  Stopwatch clock;
-  check(plc);
-  stats.seconds_check = clock.lap();
+Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
   Triangulation<D> tri = build(plc, options, stats, clock);
-  stats.seconds_build = clock.lap();
+  stats.seconds_build += clock.lap();
   stats.simplices = tri.num_simplices();
   compute_neighbors(tri);
   detail::assign_regions(tri, plc);
   const ValidationReport report = validate(tri, plc);
-  stats.seconds_finish = clock.lap();
+  stats.seconds_finish += clock.lap();
   if (!report.ok())
     throw NoCdtError("no CDT: the constructed triangulation fails validation (" + report.failures.front().check + ": " +
                          report.failures.front().detail + ")",
@@ -78,9 +73,50 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options) {
   return tri;
 }
 
+}  // namespace
+
+template <int D>
+Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangulated) {
+  CdtStatistics local;
+  CdtStatistics& stats = options.statistics ? *options.statistics : local;
+  stats = {};
+  Stopwatch clock;
+  check(plc);
+  stats.seconds_check = clock.lap();
+  if constexpr (D == 3) {
+    if (options.steiner == SteinerMode::Auto) {
+      detail::RefinedPlc refined = detail::recover_segments(plc, options);
+      stats.steiner_points = refined.steiner_on.size();
+      stats.steiner_rounds = static_cast<uint64_t>(refined.rounds);
+      if (!plc.tags.empty())
+        for (auto& t : refined.original) t = plc.tags[t];
+      refined.plc.tags = refined.original;
+      check(refined.plc);  // rounding of the midpoints must not have broken the PLC
+      stats.seconds_setup += clock.lap();
+      Triangulation<3> tri = triangulate(refined.plc, options, stats, clock);
+      tri.num_input_points = refined.num_input_points;
+      tri.steiner_on = std::move(refined.steiner_on);
+      if (triangulated) *triangulated = std::move(refined.plc);
+      return tri;
+    }
+  }
+  Triangulation<D> tri = triangulate(plc, options, stats, clock);
+  if (triangulated) *triangulated = plc;
+  return tri;
+}
+
+template <int D>
+Triangulation<D> cdt(const Plc<D>& plc, const Options& options) {
+  return cdt(plc, options, static_cast<Plc<D>*>(nullptr));
+}
+
 template Triangulation<2> cdt<2>(const Plc<2>&, const Options&);
 template Triangulation<3> cdt<3>(const Plc<3>&, const Options&);
 template Triangulation<4> cdt<4>(const Plc<4>&, const Options&);
 template Triangulation<5> cdt<5>(const Plc<5>&, const Options&);
+template Triangulation<2> cdt<2>(const Plc<2>&, const Options&, Plc<2>*);
+template Triangulation<3> cdt<3>(const Plc<3>&, const Options&, Plc<3>*);
+template Triangulation<4> cdt<4>(const Plc<4>&, const Options&, Plc<4>*);
+template Triangulation<5> cdt<5>(const Plc<5>&, const Options&, Plc<5>*);
 
 }  // namespace sweepcdt

@@ -35,6 +35,7 @@ struct CdtStatistics {
   uint64_t simplices = 0;
   uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
   uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
+  uint64_t steiner_points = 0, steiner_rounds = 0;
   double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
 };
 
@@ -44,8 +45,17 @@ struct Progress {
   uint64_t total;     // vertices in all (0 when unknown)
 };
 
+// Steiner points (beyond the paper, D = 3): most real surfaces have no CDT as given.
+enum class SteinerMode {
+  None,  // the PLC as given: NoCdtError when it has no CDT (paper §2)
+  Auto,  // split segments that are not strongly Delaunay (at midpoints) until a CDT exists; the
+         // Steiner points follow the input points, each with the input triangle it lies on (to
+         // within rounding: see core/src/steiner/segment_recovery.h)
+};
+
 struct Options {
   Algorithm algorithm = Algorithm::SweepSphere;
+  SteinerMode steiner = SteinerMode::None;
   CdtStatistics* statistics = nullptr;  // filled in when set
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;
@@ -69,5 +79,12 @@ class CancelledError : public Error {
 
 template <int D>
 Triangulation<D> cdt(const Plc<D>& plc, const Options& options = {});
+
+// The same, also returning the PLC actually triangulated: with Steiner points, the input's points
+// and the Steiner points, and the input's triangles split at them (tags = input triangle index or
+// input tag). It holds every point of the result, so to validate against it count them all as its
+// points: a copy with num_input_points = triangulated->num_points() and steiner_on cleared.
+template <int D>
+Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangulated);
 
 }  // namespace sweepcdt
