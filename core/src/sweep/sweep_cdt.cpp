@@ -273,8 +273,18 @@ class Sweep {
   }
 
   // --- NEWFACE (Figure 13) -----------------------------------------------------------------------
+  // Enqueues only the candidate with the least key — the paper's second inefficiency removed; if it
+  // turns out stale while f is still unfinished, sweep() asks again (so a face is never left without
+  // its current candidate). A pair found from both of its faces is the same simplex: equal keys, and
+  // the second copy is dropped as stale.
   void new_face(uint32_t f) {
     const Face<D>& face = faces_[f];
+    Item best{};
+    bool have = false;
+    const auto consider = [&](Item item) {
+      item.key = key_interval(item.s);
+      if (!have || key_less(item, best)) best = item, have = true;
+    };
     for (int i = 0; i < D; ++i) {
       const uint32_t g = front_neighbour(f, i);
       if (g == f || faces_[g].built_front) continue;
@@ -282,9 +292,13 @@ class Sweep {
       const uint32_t apex_g = apex_on(g, ridge);
       // Reflex ridge: each face in front of the other.
       if (side(face, apex_g) != Side::Front || side(faces_[g], face.v[i]) != Side::Front) continue;
-      push({simplex_on_front(face, apex_g), f, g, face.version, true, {}});
+      consider({simplex_on_front(face, apex_g), f, g, face.version, true, {}});
     }
-    if (face.drop != kNone) push({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false, {}});
+    if (face.drop != kNone) consider({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false, {}});
+    if (have) {
+      queue_.push(best);
+      ++stats_.queue_pushes;
+    }
   }
 
   // The drop-list vertex inside the circumsphere of conv(f ∪ v') for every other v' (transitive).
@@ -296,12 +310,6 @@ class Sweep {
     return best;
   }
 
-  void push(Item item) {
-    item.key = key_interval(item.s);
-    queue_.push(item);
-    ++stats_.queue_pushes;
-  }
-
   // --- the sweep ---------------------------------------------------------------------------------
   void sweep() {
     while (!queue_.empty()) {
@@ -310,6 +318,10 @@ class Sweep {
       ++stats_.queue_pops;
       if (!valid(item)) {
         ++stats_.stale_pops;
+        // f's current candidate went stale (its partner was finished or is no longer its neighbour)
+        // while f is still open: find f's candidate anew.
+        const Face<D>& f = faces_[item.f];
+        if (!f.built_front && f.version == item.f_version) new_face(item.f);
         continue;
       }
       build(item.s);

@@ -1,5 +1,6 @@
-// Gift-wrapping equals CGAL where the answer is unique (random points in general position):
-// Constrained_Delaunay_triangulation_2 for PSLGs and polygons with holes, Delaunay_triangulation_3.
+// Every algorithm (gift-wrapping, sweep sphere, sweep plane) equals CGAL where the answer is unique
+// (random points in general position): Constrained_Delaunay_triangulation_2 for PSLGs and polygons
+// with holes, Delaunay_triangulation_3.
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -23,6 +24,15 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_da
 using Triangle = std::set<uint32_t>;
 
 namespace {
+
+constexpr Algorithm kAlgorithms[] = {Algorithm::GiftWrap, Algorithm::SweepSphere, Algorithm::SweepPlane};
+
+template <int D>
+Triangulation<D> run(const Plc<D>& plc, Algorithm algorithm) {
+  Options options;
+  options.algorithm = algorithm;
+  return cdt(plc, options);
+}
 
 template <int D>
 std::set<std::set<uint32_t>> simplex_set(const Triangulation<D>& tri) {
@@ -75,7 +85,7 @@ std::set<Triangle> cgal_all_faces(const Cdt& cdt) {
   return faces;
 }
 
-TEST(GiftWrapCgal, RandomPslgsEqualCgalCdt2) {
+TEST(AlgorithmsEqualCgal, RandomPslgsEqualCgalCdt2) {
   for (int seed = 0; seed < 200; ++seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -88,14 +98,14 @@ TEST(GiftWrapCgal, RandomPslgsEqualCgalCdt2) {
       plc.simplices.insert(plc.simplices.end(), {a, b});
       if (!find_problems(plc).empty()) plc.simplices.resize(plc.simplices.size() - 2);
     }
-    const auto tri = cdt(plc);
-    EXPECT_EQ(simplex_set(tri), cgal_all_faces(cgal_cdt(plc))) << "seed " << seed;
+    const auto expected = cgal_all_faces(cgal_cdt(plc));
+    for (Algorithm a : kAlgorithms) EXPECT_EQ(simplex_set(run(plc, a)), expected) << to_string(a) << " seed " << seed;
   }
 }
 
 // A star-shaped outer polygon (counterclockwise), a star-shaped hole (clockwise) around the same
 // centre, and random points anywhere: only those in the domain belong to the CDT.
-TEST(GiftWrapCgal, PolygonsWithHolesEqualCgalCdt2) {
+TEST(AlgorithmsEqualCgal, PolygonsWithHolesEqualCgalCdt2) {
   const double pi = 3.14159265358979323846;
   for (int seed = 0; seed < 100; ++seed) {
     std::mt19937_64 rng(1000 + seed);
@@ -114,12 +124,12 @@ TEST(GiftWrapCgal, PolygonsWithHolesEqualCgalCdt2) {
     for (int i = 0; i < 25; ++i) plc.points.insert(plc.points.end(), {2.2 * u(rng) - 1.1, 2.2 * u(rng) - 1.1});
     plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);  // domain on the left
     if (!find_problems(plc).empty()) continue;  // a random point landed on a segment
-    const auto tri = cdt(plc);
-    EXPECT_EQ(simplex_set(tri), cgal_domain_faces(cgal_cdt(plc))) << "seed " << seed;
+    const auto expected = cgal_domain_faces(cgal_cdt(plc));
+    for (Algorithm a : kAlgorithms) EXPECT_EQ(simplex_set(run(plc, a)), expected) << to_string(a) << " seed " << seed;
   }
 }
 
-TEST(GiftWrapCgal, RandomPointsEqualCgalDelaunay3) {
+TEST(AlgorithmsEqualCgal, RandomPointsEqualCgalDelaunay3) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<uint32_t, K>;
   using Dt = CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb>>;
   for (int seed = 0; seed < 5; ++seed) {
@@ -132,7 +142,7 @@ TEST(GiftWrapCgal, RandomPointsEqualCgalDelaunay3) {
     std::set<std::set<uint32_t>> expected;
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
       expected.insert({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-    EXPECT_EQ(simplex_set(cdt(plc)), expected) << "seed " << seed;
+    for (Algorithm a : kAlgorithms) EXPECT_EQ(simplex_set(run(plc, a)), expected) << to_string(a) << " seed " << seed;
   }
 }
 
