@@ -57,7 +57,7 @@ struct SurfaceReport {
   std::array<uint64_t, kSurfaceProblemKinds> counts{};
   uint64_t count(SurfaceProblemKind kind) const { return counts[static_cast<int>(kind)]; }
 
-  bool closed = false;    // no boundary edge, no non-manifold edge, no degenerate triangle
+  bool closed = false;    // no boundary edge, no non-manifold edge, no triangle naming a vertex twice
   bool manifold = false;  // no non-manifold edge or vertex
   bool oriented = false;  // every two-triangle edge is traversed in opposite directions in the input
   bool self_intersections_checked = false;  // false when the input was too broken to look
