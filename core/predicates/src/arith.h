@@ -84,6 +84,7 @@ struct WideArith {
   int lowest_bit;
   int64_t scaled(double x) const {
     const Decomposed d = decompose(x);
+    if (d.mantissa == 0) return 0;  // a zero's exponent is arbitrary: no shift (it could exceed 63)
     const int shift = d.exponent - lowest_bit;  // >= -(trailing zeros of the mantissa): exact
     const auto magnitude = static_cast<int64_t>(shift >= 0 ? d.mantissa << shift : d.mantissa >> -shift);
     return d.negative ? -magnitude : magnitude;

@@ -190,7 +190,9 @@ class Sweep {
     std::unordered_map<RidgeKey<D>, std::vector<uint32_t>, TupleHash> around;
     for (uint32_t f = 0; f < faces_.size(); ++f)
       for (int i = 0; i < D; ++i) around[ridge_of<D>(faces_[f].v, i)].push_back(f);
-    for (auto& [ridge, list] : around) {
+    for (auto& entry : around) {
+      const RidgeKey<D> ridge = entry.first;  // a named copy: lambdas may not capture bindings (clang 14)
+      std::vector<uint32_t>& list = entry.second;
       const auto r = ridge_coords(ridge);
       const double* ref = point(apex_on(list[0], ridge));
       std::sort(list.begin() + 1, list.end(), [&](uint32_t a, uint32_t b) {
