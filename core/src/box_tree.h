@@ -55,20 +55,7 @@ class BoxTree {
   // Calls visit(i) for every box i that overlaps `query`.
   template <class Visit>
   void for_each_overlap(const Box<D>& query, Visit&& visit) const {
-    if (nodes_.empty()) return;
-    std::vector<uint32_t> stack{0};
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
-      if (!node.box.overlaps(query)) continue;
-      if (node.left == kLeaf) {
-        for (uint32_t i = node.begin; i < node.end; ++i)
-          if (boxes_[order_[i]].overlaps(query)) visit(order_[i]);
-      } else {
-        stack.push_back(node.left);
-        stack.push_back(node.left + 1);
-      }
-    }
+    for_each_passing([&](const Box<D>& b) { return b.overlaps(query); }, visit);
   }
 
   // Calls visit(i) for every box i that passes `test` (a box predicate that must also hold for any

@@ -1,6 +1,7 @@
 // Gift-wrapping (paper §2): grow a seed simplex, then finish unfinished hyperfaces one by one, each by
 // the first vertex an expanding sphere touches (among those whose simplex's interior meets no
 // constraining facet). O(n_v n_f n_s) with the box tree pruning the n_f factor in practice.
+#include "ids_text.h"
 #include "gift_wrap.h"
 
 #include <algorithm>
@@ -28,13 +29,6 @@ template <int D>
 Key<D> sorted(Key<D> k) {
   std::sort(k.begin(), k.end());
   return k;
-}
-
-template <int D>
-std::string ids_text(const uint32_t* ids, int count) {
-  std::string s = "(";
-  for (int i = 0; i < count; ++i) s += (i ? " " : "") + std::to_string(ids[i]);
-  return s + ")";
 }
 
 template <int D>
@@ -185,7 +179,7 @@ class GiftWrapper {
         finished_[key] = 2;
         return;
       }
-      throw NoCdtError("gift-wrapping: no vertex can finish face " + ids_text<D>(face.v.data(), D) +
+      throw NoCdtError("gift-wrapping: no vertex can finish face " + ids_text(face.v.data(), D) +
                            " (no CDT exists, or the exterior notations do not enclose the domain)",
                        {face.v.begin(), face.v.end()});
     }
@@ -218,8 +212,8 @@ class GiftWrapper {
         if (k != i) g[j++] = s[k];
       uint8_t& count = finished_[sorted<D>(g)];
       if (count >= 2)
-        throw NoCdtError("gift-wrapping: simplex " + ids_text<D>(s.data(), D + 1) + " would be the third on face " +
-                             ids_text<D>(g.data(), D) + ": it is not constrained Delaunay, so no CDT exists",
+        throw NoCdtError("gift-wrapping: simplex " + ids_text(s.data(), D + 1) + " would be the third on face " +
+                             ids_text(g.data(), D) + ": it is not constrained Delaunay, so no CDT exists",
                          {s.begin(), s.end()});
       if (++count == 2) continue;
       // Open g toward the side away from s: s[i] must end up on g's negative side.

@@ -1,5 +1,6 @@
 // validate(): exact check that a triangulation is the CDT of a PLC. What is checked and why it
 // suffices is documented in validate.h.
+#include "ids_text.h"
 #include "sweepcdt/validate.h"
 
 #include <algorithm>
@@ -17,16 +18,10 @@ namespace sweepcdt {
 namespace {
 
 using predicates::Sign;
+using detail::ids_text;
 constexpr std::size_t kReportedPerCheck = 10;
 
 std::string n(uint64_t i) { return std::to_string(i); }
-
-template <int D>
-std::string ids_text(const uint32_t* ids, int count) {
-  std::string s = "(";
-  for (int i = 0; i < count; ++i) s += (i ? " " : "") + n(ids[i]);
-  return s + ")";
-}
 
 template <int D>
 class Validator {
@@ -76,8 +71,8 @@ class Validator {
     for (int i = 0; i < D; ++i) c[i] = tri_.point(plc_.simplex(j)[i]);
     return c;
   }
-  std::string simplex_text(uint32_t t) const { return "simplex " + n(t) + " " + ids_text<D>(tri_.simplex(t), D + 1); }
-  std::string facet_text(const Group& g) const { return "facet " + ids_text<D>(facets_[g.begin].key.data(), D); }
+  std::string simplex_text(uint32_t t) const { return "simplex " + n(t) + " " + ids_text(tri_.simplex(t), D + 1); }
+  std::string facet_text(const Group& g) const { return "facet " + ids_text(facets_[g.begin].key.data(), D); }
   uint32_t apex(const detail::FacetEntry<D>& e) const { return tri_.simplex(e.simplex)[e.local]; }
 
   bool shapes() {
@@ -185,7 +180,7 @@ class Validator {
         continue;
       }
       if (steiner_on_constraint[j].empty() || !covered_by_facets(j, steiner_on_constraint[j]))
-        fail("constraints", "constraining simplex " + n(j) + " " + ids_text<D>(plc_.simplex(j), D) + " is not a union of facets");
+        fail("constraints", "constraining simplex " + n(j) + " " + ids_text(plc_.simplex(j), D) + " is not a union of facets");
     }
   }
 
@@ -307,7 +302,7 @@ class Validator {
       }
     for (const auto& [ridge, faces] : ridges) {
       if (faces.size() != 2) {
-        fail("domain-boundary", "a boundary ridge " + ids_text<D>(ridge.data(), D - 1) + " has " + n(faces.size()) + " boundary facets, not 2");
+        fail("domain-boundary", "a boundary ridge " + ids_text(ridge.data(), D - 1) + " has " + n(faces.size()) + " boundary facets, not 2");
         continue;
       }
       for (int k = 0; k < 2; ++k) {
@@ -316,7 +311,7 @@ class Validator {
         for (uint32_t v : other->key)
           if (!std::binary_search(f->key.begin(), f->key.end(), v) &&
               orient_replaced(f->simplex, f->local, tri_.point(v)) == Sign::Negative)
-            fail("domain-boundary", "the boundary is not convex at ridge " + ids_text<D>(ridge.data(), D - 1));
+            fail("domain-boundary", "the boundary is not convex at ridge " + ids_text(ridge.data(), D - 1));
       }
     }
     // Small inputs: also test every point against every boundary facet directly.

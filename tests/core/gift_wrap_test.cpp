@@ -9,6 +9,7 @@
 
 #include "brute_force_delaunay.h"
 #include "sweepcdt/cdt.h"
+#include "triangulation_util.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/validate.h"
 #include "off_reader.h"
@@ -19,36 +20,12 @@ using namespace sweepcdt;
 namespace {
 
 template <int D>
-std::set<std::vector<uint32_t>> simplex_set(const Triangulation<D>& tri) {
-  std::set<std::vector<uint32_t>> set;
-  for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
-    std::vector<uint32_t> s(tri.simplex(t), tri.simplex(t) + D + 1);
-    std::sort(s.begin(), s.end());
-    set.insert(s);
-  }
-  return set;
-}
-
-template <int D>
-std::vector<double> grid_points(std::mt19937_64& rng, int count, int grid) {
-  std::set<std::vector<double>> seen;
-  std::vector<double> points;
-  std::uniform_int_distribution<int> coordinate(0, grid);
-  while (static_cast<int>(seen.size()) < count) {
-    std::vector<double> p(D);
-    for (auto& x : p) x = coordinate(rng);
-    if (seen.insert(p).second) points.insert(points.end(), p.begin(), p.end());
-  }
-  return points;
-}
-
-template <int D>
 void equals_brute_force(int count, int grid, int seeds) {
   int compared = 0;
   for (int seed = 0; seed < seeds; ++seed) {
     std::mt19937_64 rng(7000 * D + seed);
     Plc<D> plc;
-    plc.points = grid_points<D>(rng, count, grid);
+    plc.points = fixtures::distinct_grid_points<D>(rng, count, grid);
     const auto reference = fixtures::brute_force_delaunay<D>(plc.points);
     if (reference.num_simplices() == 0) {
       EXPECT_THROW(cdt(plc), PlcError);  // lower-dimensional
@@ -56,7 +33,7 @@ void equals_brute_force(int count, int grid, int seeds) {
     }
     ++compared;
     const auto tri = cdt(plc);
-    EXPECT_EQ(simplex_set(tri), simplex_set(reference)) << "D=" << D << " seed " << seed;
+    EXPECT_EQ(fixtures::simplex_set(tri), fixtures::simplex_set(reference)) << "D=" << D << " seed " << seed;
     EXPECT_TRUE(validate(tri, plc).ok());
   }
   EXPECT_GE(compared, seeds / 2);
@@ -301,7 +278,7 @@ void strongly_delaunay_constraints(int points, int constraints, int seeds) {
     }
     const auto report = validate(tri, plc);
     EXPECT_TRUE(report.ok()) << "D=" << D << " seed " << seed << "\n" << report.summary();
-    changed += simplex_set(tri) != simplex_set(delaunay);
+    changed += fixtures::simplex_set(tri) != fixtures::simplex_set(delaunay);
   }
   EXPECT_GE(changed, seeds / 2) << "the constraints rarely mattered: this test checks little";
 }

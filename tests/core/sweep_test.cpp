@@ -9,23 +9,13 @@
 #include "brute_force_delaunay.h"
 #include "off_reader.h"
 #include "sweepcdt/cdt.h"
+#include "triangulation_util.h"
 #include "sweepcdt/validate.h"
 #include "test_shapes.h"
 
 using namespace sweepcdt;
 
 namespace {
-
-template <int D>
-std::set<std::vector<uint32_t>> simplex_set(const Triangulation<D>& tri) {
-  std::set<std::vector<uint32_t>> set;
-  for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
-    std::vector<uint32_t> s(tri.simplex(t), tri.simplex(t) + D + 1);
-    std::sort(s.begin(), s.end());
-    set.insert(s);
-  }
-  return set;
-}
 
 template <int D>
 Triangulation<D> run(const Plc<D>& plc, Algorithm algorithm, CdtStatistics* stats = nullptr) {
@@ -47,7 +37,7 @@ void expect_agreement(const Plc<D>& plc, const std::string& what) {
       ADD_FAILURE() << what << " " << to_string(a) << ": " << e.what();
       continue;
     }
-    EXPECT_EQ(simplex_set(tri), simplex_set(reference)) << what << " " << to_string(a);
+    EXPECT_EQ(fixtures::simplex_set(tri), fixtures::simplex_set(reference)) << what << " " << to_string(a);
     const auto report = validate(tri, plc);
     EXPECT_TRUE(report.ok()) << what << " " << to_string(a) << "\n" << report.summary();
   }

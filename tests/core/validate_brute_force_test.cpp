@@ -8,23 +8,11 @@
 
 #include "brute_force_delaunay.h"
 #include "sweepcdt/validate.h"
+#include "triangulation_util.h"
 
 using namespace sweepcdt;
 
 namespace {
-
-template <int D>
-std::vector<double> distinct_grid_points(std::mt19937_64& rng, int count, int grid) {
-  std::set<std::vector<double>> seen;
-  std::vector<double> points;
-  std::uniform_int_distribution<int> coordinate(0, grid);
-  while (static_cast<int>(seen.size()) < count) {
-    std::vector<double> p(D);
-    for (auto& x : p) x = coordinate(rng);
-    if (seen.insert(p).second) points.insert(points.end(), p.begin(), p.end());
-  }
-  return points;
-}
 
 template <int D>
 Plc<D> points_only(const std::vector<double>& points) {
@@ -38,7 +26,7 @@ void check_grids(int count, int grid, int seeds) {
   int tested = 0;
   for (int seed = 0; seed < seeds; ++seed) {
     std::mt19937_64 rng(1000 * D + seed);
-    const auto points = distinct_grid_points<D>(rng, count, grid);
+    const auto points = fixtures::distinct_grid_points<D>(rng, count, grid);
     auto tri = fixtures::brute_force_delaunay<D>(points);
     if (tri.num_simplices() == 0) continue;  // all points in one hyperplane
     ++tested;

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "sweepcdt/cdt.h"
+#include "triangulation_util.h"
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/validate.h"
 
@@ -22,16 +23,6 @@ const char* kValidMeshes[] = {
     "gltf/two_objects_inverse_materials.gltf",        "glb/moon.glb",                  "glb/cubevc.glb",
     "drc/cube_att.drc",    "drc/knot1.drc"};
 
-std::set<std::vector<uint32_t>> simplex_set(const Triangulation<3>& tri) {
-  std::set<std::vector<uint32_t>> set;
-  for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
-    std::vector<uint32_t> s(tri.simplex(t), tri.simplex(t) + 4);
-    std::sort(s.begin(), s.end());
-    set.insert(s);
-  }
-  return set;
-}
-
 // The simplices, or nothing when the algorithm proves there is no CDT.
 std::optional<std::set<std::vector<uint32_t>>> run(const Plc<3>& plc, Algorithm algorithm, std::string& why) {
   Options options;
@@ -40,7 +31,7 @@ std::optional<std::set<std::vector<uint32_t>>> run(const Plc<3>& plc, Algorithm 
     const auto tri = cdt(plc, options);
     const auto report = validate(tri, plc);
     EXPECT_TRUE(report.ok()) << to_string(algorithm) << "\n" << report.summary();
-    return simplex_set(tri);
+    return fixtures::simplex_set(tri);
   } catch (const NoCdtError& e) {
     why = e.what();
     return std::nullopt;

@@ -2,6 +2,7 @@
 // and faces with the best vertex of their drop list — wait in a priority queue ordered by
 // circumcentre (plane) or power tuple (sphere), compared exactly (predicates/sweep_keys.h); each one
 // popped that is still valid is constrained Delaunay (Theorem 5) and is built.
+#include "../ids_text.h"
 #include "sweep_cdt.h"
 
 #include <algorithm>
@@ -27,11 +28,14 @@ constexpr uint32_t kAbsent = TupleMap<1>::kAbsent;
 using predicates::Side;
 using predicates::Sign;
 
+// The facet of simplex s opposite its vertex i, as a sorted key.
 template <int D>
-std::string ids_text(const uint32_t* ids, int count) {
-  std::string s = "(";
-  for (int i = 0; i < count; ++i) s += (i ? " " : "") + std::to_string(ids[i]);
-  return s + ")";
+FaceKey<D> facet_opposite(const std::array<uint32_t, D + 1>& s, int i) {
+  FaceKey<D> key;
+  for (int k = 0, j = 0; k <= D; ++k)
+    if (k != i) key[j++] = s[k];
+  std::sort(key.begin(), key.end());
+  return key;
 }
 
 // Parity of the permutation that sorts `ids`: +1 even, -1 odd.
@@ -173,10 +177,7 @@ class Sweep {
   void add_seed(const std::array<uint32_t, D + 1>& delta) {
     simplices_.insert(simplices_.end(), delta.begin(), delta.end());
     for (int i = 0; i <= D; ++i) {
-      FaceKey<D> key;
-      for (int k = 0, j = 0; k <= D; ++k)
-        if (k != i) key[j++] = delta[k];
-      std::sort(key.begin(), key.end());
+      const FaceKey<D> key = facet_opposite<D>(delta, i);
       const uint32_t found = face_of_.find(key);
       const uint32_t id = found != kAbsent ? found : add_face(key);
       if (side(key, delta[i]) != Side::Behind) no_cdt("the seed simplex is not behind its face", key.data(), D);
@@ -350,23 +351,20 @@ class Sweep {
       if (!reached_[v]) reached_[v] = 1, ++reached_count_;
     std::vector<uint32_t> finished, fresh, behind;  // faces s finishes, creates, lies behind
     for (int i = 0; i <= D; ++i) {
-      FaceKey<D> key;
-      for (int k = 0, j = 0; k <= D; ++k)
-        if (k != i) key[j++] = s[k];
-      std::sort(key.begin(), key.end());
+      const FaceKey<D> key = facet_opposite<D>(s, i);
       const uint32_t found = face_of_.find(key);
       const int8_t front = found != kAbsent ? faces_[found].front : front_sign(key);
       const Side where = side_given_front(key, front, s[i]);  // which side of the face s lies on
       if (found != kAbsent) {
         Face<D>& h = faces_[found];
         bool& built = where == Side::Front ? h.built_front : h.built_behind;
-        if (built) no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " overlaps another on a face: it is not constrained Delaunay", s.data(), D + 1);
+        if (built) no_cdt("simplex " + ids_text(s.data(), D + 1) + " overlaps another on a face: it is not constrained Delaunay", s.data(), D + 1);
         built = true;
         (where == Side::Front ? finished : behind).push_back(found);
         continue;
       }
       if (where != Side::Behind)
-        no_cdt("simplex " + ids_text<D>(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)", s.data(), D + 1);
+        no_cdt("simplex " + ids_text(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)", s.data(), D + 1);
       const uint32_t h = add_face(key, front);
       faces_[h].built_behind = true;
       fresh.push_back(h);
