@@ -69,11 +69,7 @@ class GiftWrapper {
       add_simplex(plc_.num_simplices() ? seed_from_constraint(0) : unconstrained_seed());
       wrap();
     }
-    Triangulation<D> tri;
-    tri.points = plc_.points;
-    tri.num_input_points = static_cast<uint32_t>(plc_.num_points());
-    tri.simplices = std::move(simplices_);
-    return tri;
+    return triangulation_of<D>(plc_, std::move(simplices_));
   }
 
  private:

@@ -191,25 +191,6 @@ TEST(GiftWrap, OpenSurfaceIsNotADomain) {
   EXPECT_THROW(cdt(plc), NoCdtError);
 }
 
-TEST(GiftWrap, ProgressAndCancellation) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0, 1);
-  Plc<3> plc;
-  for (int i = 0; i < 3 * 800; ++i) plc.points.push_back(u(rng));
-  int calls = 0;
-  Options options;
-  options.algorithm = Algorithm::GiftWrap;
-  options.progress = [&](const Progress& p) {
-    ++calls;
-    EXPECT_LE(p.done, p.total);
-    return true;
-  };
-  EXPECT_NO_THROW(cdt(plc, options));
-  EXPECT_GT(calls, 0);
-  options.progress = [](const Progress&) { return false; };
-  EXPECT_THROW(cdt(plc, options), CancelledError);
-}
-
 }  // namespace
 
 namespace {

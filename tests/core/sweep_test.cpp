@@ -111,22 +111,26 @@ TEST(Sweep, StatisticsAreReported) {
   EXPECT_GT(stats.queue_pushes, 0u);
 }
 
-TEST(Sweep, ProgressAndCancellation) {
-  std::mt19937_64 rng(4);
-  std::uniform_real_distribution<double> u(0, 1);
-  Plc<3> plc;
-  for (int i = 0; i < 3 * 4000; ++i) plc.points.push_back(u(rng));
-  int calls = 0;
-  Options options;
-  options.progress = [&](const Progress& p) {
-    ++calls;
-    EXPECT_LE(p.done, p.total);
-    return true;
-  };
-  EXPECT_NO_THROW(cdt(plc, options));
-  EXPECT_GT(calls, 0);
-  options.progress = [](const Progress&) { return false; };
-  EXPECT_THROW(cdt(plc, options), CancelledError);
+// Progress reports (vertices reached of all vertices) and cancellation, for both algorithm families.
+TEST(Progress, ReportsAndCancels) {
+  for (const auto& [algorithm, points] : {std::pair{Algorithm::GiftWrap, 800}, std::pair{Algorithm::SweepSphere, 4000}}) {
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> u(0, 1);
+    Plc<3> plc;
+    for (int i = 0; i < 3 * points; ++i) plc.points.push_back(u(rng));
+    int calls = 0;
+    Options options;
+    options.algorithm = algorithm;
+    options.progress = [&](const Progress& p) {
+      ++calls;
+      EXPECT_LE(p.done, p.total);
+      return true;
+    };
+    EXPECT_NO_THROW(cdt(plc, options)) << to_string(algorithm);
+    EXPECT_GT(calls, 0) << to_string(algorithm);
+    options.progress = [](const Progress&) { return false; };
+    EXPECT_THROW(cdt(plc, options), CancelledError) << to_string(algorithm);
+  }
 }
 
 }  // namespace

@@ -37,6 +37,16 @@ struct Triangulation {
   const uint32_t* simplex(std::size_t t) const { return simplices.data() + t * (D + 1); }
 };
 
+// A triangulation of the PLC's points (no Steiner points) with the given simplices, no neighbours yet.
+template <int D, class Plc>
+Triangulation<D> triangulation_of(const Plc& plc, std::vector<uint32_t> simplices) {
+  Triangulation<D> tri;
+  tri.points = plc.points;
+  tri.num_input_points = static_cast<uint32_t>(plc.num_points());
+  tri.simplices = std::move(simplices);
+  return tri;
+}
+
 // Fills tri.neighbors from tri.simplices (facets shared by more than two simplices are left unpaired;
 // validate() reports them).
 template <int D>

@@ -64,11 +64,7 @@ class Sweep {
     for (uint32_t f = 0; f < faces_.size(); ++f)
       if (!faces_[f].built_front) new_face(f);
     sweep();
-    Triangulation<D> tri;
-    tri.points = plc_.points;
-    tri.num_input_points = static_cast<uint32_t>(plc_.num_points());
-    tri.simplices = std::move(simplices_);
-    return tri;
+    return triangulation_of<D>(plc_, std::move(simplices_));
   }
 
  private:
