@@ -64,6 +64,7 @@ class Sweep {
     for (uint32_t f = 0; f < faces_.size(); ++f)
       if (!faces_[f].built_front) new_face(f);
     sweep();
+    require_domain_sides_built();
     return triangulation_of<D>(plc_, std::move(simplices_));
   }
 
@@ -80,6 +81,16 @@ class Sweep {
     const Sweep* sweep;
     bool operator()(const Item& a, const Item& b) const { return sweep->key_less(b, a); }  // min-heap
   };
+
+  // A notated constraint whose domain side got no simplex: the queue ran dry before reaching it, so
+  // no simplex there is constrained Delaunay — the PLC has no CDT. (Its exterior side counts as built.)
+  void require_domain_sides_built() const {
+    for (const Face<D>& f : faces_)
+      if (f.constraint != kNone && plc_.exterior_of(f.constraint) != ExteriorSide::None && !(f.built_front && f.built_behind))
+        no_cdt("no simplex on the domain side of constraining simplex " + std::to_string(f.constraint) + " " +
+                   ids_text(f.v.data(), D) + ": no constrained Delaunay simplex can be built there",
+               f.v.data(), D);
+  }
 
   // --- geometry ------------------------------------------------------------------------------
   const double* point(uint32_t v) const { return plc_.point(v); }
