@@ -68,28 +68,26 @@ double short_double(std::mt19937_64& rng) {
   return std::ldexp(static_cast<double>(std::uniform_int_distribution<int>(-(1 << 25), 1 << 25)(rng)), -25);
 }
 
-InputSet make_random(std::mt19937_64& rng) {
-  InputSet s("random");
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
+// kCases cases with every coordinate drawn from `coordinate`.
+template <class Distribution>
+InputSet make_uniform(const char* name, std::mt19937_64& rng, Distribution coordinate) {
+  InputSet s(name);
   for (std::size_t n = 0; n < kCases; ++n) {
     Case c;
     for (auto& p : c)
-      for (double& x : p) x = u(rng);
+      for (double& x : p) x = coordinate(rng);
     s.cases.push_back(c);
   }
   return s;
 }
 
+InputSet make_random(std::mt19937_64& rng) {
+  return make_uniform("random", rng, std::uniform_real_distribution<double>(-1.0, 1.0));
+}
+
+// Coordinates in {-1, 0, 1}: many exact zeros.
 InputSet make_grid(std::mt19937_64& rng) {
-  InputSet s("grid");
-  std::uniform_int_distribution<int> u(-1, 1);
-  for (std::size_t n = 0; n < kCases; ++n) {
-    Case c;
-    for (auto& p : c)
-      for (double& x : p) x = u(rng);
-    s.cases.push_back(c);
-  }
-  return s;
+  return make_uniform("grid", rng, std::uniform_int_distribution<int>(-1, 1));
 }
 
 InputSet make_coplanar(std::mt19937_64& rng) {

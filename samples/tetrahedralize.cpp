@@ -24,14 +24,12 @@ int main(int argc, char** argv) {
     CdtStatistics stats;
     options.statistics = &stats;
     Plc<3> triangulated;
-    Triangulation<3> tri = cdt(plc, options, &triangulated);
+    const Triangulation<3> tri = cdt(plc, options, &triangulated);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu triangles, %zu vertices\n", argv[1], plc.num_simplices(), plc.num_points());
     std::printf("CDT (%s): %zu tetrahedra, %zu Steiner points, %.2f s\n", to_string(stats.algorithm),
                 tri.num_simplices(), tri.steiner_on.size(), seconds);
-    tri.num_input_points = static_cast<uint32_t>(triangulated.num_points());  // validate the refined PLC
-    tri.steiner_on.clear();
-    const ValidationReport report = validate(tri, triangulated);
+    const ValidationReport report = validate_triangulated(tri, triangulated);
     std::printf("validate(): %s\n", report.ok() ? "constrained Delaunay, constraints present, domain covered" : report.summary().c_str());
     return report.ok() ? 0 : 1;
   } catch (const std::exception& e) {

@@ -41,10 +41,7 @@ void expect_steiner_cdt(const Plc<3>& plc, const std::string& what, bool expect_
   } catch (const std::exception& e) {
     FAIL() << what << ": " << e.what();
   }
-  Triangulation<3> as_refined = tri;  // the refined PLC holds the Steiner points as its own points
-  as_refined.num_input_points = static_cast<uint32_t>(refined.num_points());
-  as_refined.steiner_on.clear();
-  const auto report = validate(as_refined, refined);
+  const auto report = validate_triangulated(tri, refined);
   EXPECT_TRUE(report.ok()) << what << "\n" << report.summary();
   EXPECT_EQ(tri.num_input_points, plc.num_points());
   EXPECT_EQ(tri.steiner_on.size(), tri.num_points() - plc.num_points());

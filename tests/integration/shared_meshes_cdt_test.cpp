@@ -92,10 +92,8 @@ TEST(SharedMeshes, ValidMeshesGetACdtWithSteinerPoints) {
     options.statistics = &stats;
     Plc<3> refined;
     try {
-      Triangulation<3> tri = cdt(plc, options, &refined);
-      tri.num_input_points = static_cast<uint32_t>(refined.num_points());
-      tri.steiner_on.clear();
-      const auto report = validate(tri, refined);
+      const Triangulation<3> tri = cdt(plc, options, &refined);
+      const auto report = validate_triangulated(tri, refined);
       EXPECT_TRUE(report.ok()) << name << "\n" << report.summary();
       std::printf("  %-42s %6zu triangles: %7zu tetrahedra, %5lu Steiner points%s\n", name, plc.num_simplices(),
                   tri.num_simplices(), static_cast<unsigned long>(stats.steiner_points),

@@ -17,6 +17,7 @@
 #include "sweepcdt/error.h"
 #include "sweepcdt/plc.h"
 #include "sweepcdt/triangulation.h"
+#include "sweepcdt/validate.h"
 
 namespace sweepcdt {
 
@@ -82,9 +83,18 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options = {});
 
 // The same, also returning the PLC actually triangulated: with Steiner points, the input's points
 // and the Steiner points, and the input's triangles split at them (tags = input triangle index or
-// input tag). It holds every point of the result, so to validate against it count them all as its
-// points: a copy with num_input_points = triangulated->num_points() and steiner_on cleared.
+// input tag). validate_triangulated() checks a result against it exactly.
 template <int D>
 Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangulated);
+
+// validate() of a cdt() result against the PLC it actually triangulated (see above), which holds
+// the Steiner points as its own points.
+template <int D>
+ValidationReport validate_triangulated(Triangulation<D> result, const Plc<D>& triangulated,
+                                       ValidationLevel level = ValidationLevel::Full) {
+  result.num_input_points = static_cast<uint32_t>(triangulated.num_points());
+  result.steiner_on.clear();
+  return validate(result, triangulated, level);
+}
 
 }  // namespace sweepcdt
