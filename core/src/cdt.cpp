@@ -7,7 +7,7 @@
 
 #include "gift_wrap.h"
 #include "regions.h"
-#include "steiner/segment_recovery.h"
+#include "steiner/refine.h"
 #include "sweep/sweep_cdt.h"
 #include "sweepcdt/validate.h"
 
@@ -84,14 +84,16 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   check(plc);
   stats.seconds_check = clock.lap();
   if constexpr (D == 3) {
-    if (options.steiner == SteinerMode::Auto) {
-      detail::RefinedPlc refined = detail::recover_segments(plc, options);
+    if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
+      detail::RefinedPlc refined = detail::refine(plc, options);
       stats.steiner_points = refined.steiner_on.size();
-      stats.steiner_rounds = static_cast<uint64_t>(refined.rounds);
+      stats.steiner_rounds = refined.rounds;
+      stats.facets = refined.facets;
+      stats.facet_flips = refined.flips;
       if (!plc.tags.empty())
         for (auto& t : refined.original) t = plc.tags[t];
       refined.plc.tags = refined.original;
-      check(refined.plc);  // rounding of the midpoints must not have broken the PLC
+      check(refined.plc);  // rounding of the split points must not have broken the PLC
       stats.seconds_setup += clock.lap();
       Triangulation<3> tri = triangulate(refined.plc, options, stats, clock);
       tri.num_input_points = refined.num_input_points;

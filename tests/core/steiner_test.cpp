@@ -1,9 +1,12 @@
-// SteinerMode::Auto (issue 7): PLCs without a CDT get one after splitting segments that are not
-// strongly Delaunay; the result is exactly the CDT of the refined PLC, and every Steiner point lies
-// on its recorded input triangle to within rounding.
+// SteinerMode::Auto and FacetMode::Coplanar (issue 7): PLCs without a CDT get one after splitting
+// segments that are not strongly Delaunay; the result is exactly the CDT of the refined PLC (checked
+// by validate()), and every Steiner point lies on an edge of its recorded input triangle to within
+// rounding.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <set>
 
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -29,9 +32,21 @@ double relative_plane_distance(const Plc<3>& plc, const uint32_t* t, const doubl
   return std::fabs(det) / n / scale;
 }
 
-void expect_steiner_cdt(const Plc<3>& plc, const std::string& what, bool expect_points) {
+// Distance from p to the line through u and v, relative to the largest coordinate involved.
+double relative_line_distance(const double* u, const double* v, const double* p) {
+  const double d[3] = {v[0] - u[0], v[1] - u[1], v[2] - u[2]}, e[3] = {p[0] - u[0], p[1] - u[1], p[2] - u[2]};
+  const double cross = std::hypot(d[1] * e[2] - d[2] * e[1], d[2] * e[0] - d[0] * e[2], d[0] * e[1] - d[1] * e[0]);
+  double scale = 0;
+  for (const double* q : {u, v, p})
+    for (int k = 0; k < 3; ++k) scale = std::max(scale, std::fabs(q[k]));
+  return cross / std::hypot(d[0], d[1], d[2]) / scale;
+}
+
+CdtStatistics expect_steiner_cdt(const Plc<3>& plc, const std::string& what, bool expect_points,
+                                 FacetMode facets = FacetMode::Triangles) {
   Options options;
   options.steiner = SteinerMode::Auto;
+  options.facets = facets;
   CdtStatistics stats;
   options.statistics = &stats;
   Plc<3> refined;
@@ -39,7 +54,8 @@ void expect_steiner_cdt(const Plc<3>& plc, const std::string& what, bool expect_
   try {
     tri = cdt(plc, options, &refined);
   } catch (const std::exception& e) {
-    FAIL() << what << ": " << e.what();
+    ADD_FAILURE() << what << ": " << e.what();
+    return stats;
   }
   const auto report = validate_triangulated(tri, refined);
   EXPECT_TRUE(report.ok()) << what << "\n" << report.summary();
@@ -49,13 +65,22 @@ void expect_steiner_cdt(const Plc<3>& plc, const std::string& what, bool expect_
   if (expect_points) EXPECT_GT(tri.steiner_on.size(), 0u) << what;
   for (std::size_t k = 0; k < tri.steiner_on.size(); ++k) {
     const double* p = tri.point(static_cast<uint32_t>(tri.num_input_points + k));
-    ASSERT_LT(tri.steiner_on[k], plc.num_simplices());
-    // Within a few units of roundoff of the input triangle's plane.
-    EXPECT_LT(relative_plane_distance(plc, plc.simplex(tri.steiner_on[k]), p), 1e-15) << what << " Steiner point " << k;
+    if (tri.steiner_on[k] >= plc.num_simplices()) {
+      ADD_FAILURE() << what << ": Steiner point " << k << " on no input triangle";
+      continue;
+    }
+    // Within a few units of roundoff of the input triangle's plane, and of one of its edges.
+    const uint32_t* t = plc.simplex(tri.steiner_on[k]);
+    EXPECT_LT(relative_plane_distance(plc, t, p), 1e-15) << what << " Steiner point " << k;
+    double nearest_edge = 1;
+    for (int i = 0; i < 3; ++i)
+      nearest_edge = std::min(nearest_edge, relative_line_distance(plc.point(t[i]), plc.point(t[(i + 1) % 3]), p));
+    EXPECT_LT(nearest_edge, 1e-14) << what << " Steiner point " << k;
   }
   // Every refined triangle carries its input triangle as its tag.
-  ASSERT_EQ(refined.tags.size(), refined.num_simplices());
+  EXPECT_EQ(refined.tags.size(), refined.num_simplices());
   for (uint32_t tag : refined.tags) EXPECT_LT(tag, plc.num_simplices());
+  return stats;
 }
 
 TEST(Steiner, SchonhardtPrismsGetACdt) {
@@ -63,7 +88,86 @@ TEST(Steiner, SchonhardtPrismsGetACdt) {
     const Plc<3> prism = fixtures::twisted_prism(twist);
     EXPECT_THROW(cdt(prism), NoCdtError);  // SteinerMode::None keeps the input exactly
     expect_steiner_cdt(prism, "twist " + std::to_string(twist), true);
+    // Untwisted, each side quad is one planar facet: no Schönhardt configuration is left.
+    expect_steiner_cdt(prism, "twist " + std::to_string(twist) + ", coplanar facets", twist != 0.0, FacetMode::Coplanar);
   }
+}
+
+// Generated hard cases: thin features, near-parallel faces, small dihedral and vertex angles.
+TEST(Steiner, HardGeneratedSurfaces) {
+  std::vector<std::pair<std::string, Plc<3>>> cases;
+  {
+    std::vector<double> xs{0, 1}, tops{0.2};
+    for (int fin = 0; fin < 5; ++fin) {
+      xs.push_back(xs.back() + 0.02);  // a fin 0.02 wide, 1 high
+      tops.push_back(1.0);
+      xs.push_back(xs.back() + 0.2);   // a gap
+      tops.push_back(0.2);
+    }
+    cases.emplace_back("comb of thin fins", fixtures::extruded_columns(xs, tops, 1.0));
+  }
+  cases.emplace_back("thin slab", fixtures::extruded_columns({0, 10}, {0.01}, 10.0));
+  cases.emplace_back("steps", fixtures::extruded_columns({0, 1, 2, 3}, {1, 0.5, 0.25}, 1.0));
+  {
+    Plc<3> box;
+    fixtures::add_box(box, {0, 0, 0}, {1, 1, 1}, true);
+    fixtures::add_box(box, {0.1, 0.1, 0.1}, {0.9, 0.9, 0.999}, false);
+    box.points[3 * 13 + 2] = box.points[3 * 15 + 2] = 0.9995;  // tilt the cavity's top towards the box's
+    cases.emplace_back("cavity near a face", box);
+  }
+  cases.emplace_back("wedge 1e-2", fixtures::wedge(1e-2));
+  cases.emplace_back("wedge 1e-5", fixtures::wedge(1e-5));
+  cases.emplace_back("needle", fixtures::needle(12, 0.01));
+  for (const auto& [name, plc] : cases) {
+    ASSERT_NO_THROW(check(plc)) << name;
+    const CdtStatistics triangles = expect_steiner_cdt(plc, name, false);
+    const CdtStatistics coplanar = expect_steiner_cdt(plc, name + ", coplanar facets", false, FacetMode::Coplanar);
+    std::printf("  %-20s %3zu triangles: %4lu Steiner points as triangles, %4lu with %lu coplanar facets\n", name.c_str(),
+                plc.num_simplices(), static_cast<unsigned long>(triangles.steiner_points),
+                static_cast<unsigned long>(coplanar.steiner_points), static_cast<unsigned long>(coplanar.facets));
+  }
+}
+
+// Coplanar facets: the grid box's faces become six square facets, each triangulated by its own 2D
+// CDT; their boundary segments are all Delaunay, so no Steiner point is needed at all, even with
+// SteinerMode::None, while the triangles as given have no CDT under the vertex order (see below).
+TEST(Steiner, CoplanarFacetsOfAGridBox) {
+  const Plc<3> box = fixtures::grid_box_surface(3);
+  for (SteinerMode steiner : {SteinerMode::None, SteinerMode::Auto}) {
+    Options options;
+    options.steiner = steiner;
+    options.facets = FacetMode::Coplanar;
+    CdtStatistics stats;
+    options.statistics = &stats;
+    Plc<3> refined;
+    const Triangulation<3> tri = cdt(box, options, &refined);
+    EXPECT_TRUE(validate_triangulated(tri, refined).ok());
+    EXPECT_EQ(stats.facets, 6u);
+    EXPECT_EQ(stats.steiner_points, 0u);
+    EXPECT_EQ(refined.num_simplices(), box.num_simplices());  // 2D CDTs of the same points
+    // Each face's triangles carry the face's first input triangle as their tag: six distinct tags.
+    std::set<uint32_t> tags(refined.tags.begin(), refined.tags.end());
+    EXPECT_EQ(tags.size(), 6u);
+    double volume = 0;
+    for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
+      const uint32_t* s = tri.simplex(t);
+      volume += predicates::orient_value<3>({tri.point(s[0]), tri.point(s[1]), tri.point(s[2]), tri.point(s[3])}) / 6;
+    }
+    EXPECT_NEAR(std::fabs(volume), 27.0, 1e-9);
+  }
+}
+
+// Dimension 2: every PLC has a CDT, so SteinerMode::Auto adds nothing and agrees with None.
+TEST(Steiner, TwoDimensionsNeedNoSteinerPoints) {
+  Plc<2> square;
+  square.points = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3};
+  square.simplices = {0, 1, 1, 2, 2, 3, 3, 0, 4, 6};
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  const auto with = cdt(square, options);
+  const auto without = cdt(square);
+  EXPECT_EQ(with.num_points(), square.num_points());
+  EXPECT_EQ(with.simplices, without.simplices);
 }
 
 TEST(Steiner, CosphericalCubeWithoutCdtUnderItsVertexOrder) {

@@ -69,10 +69,11 @@ TEST(SharedMeshes, AllAlgorithmsAgree) {
 }
 
 // SteinerMode::Auto must give every valid shared mesh a CDT (of the refined PLC, exactly validated),
-// except the committed known failures below, where midpoint splitting cascades (issue 7: refinement
-// with protected vertices); those must fail cleanly with that diagnosis, never crash or hang.
-const char* kKnownSteinerFailures[] = {"off/femur.off", "stl_ascii/gearwheel_ascii.stl", "stl_ascii/t13_data_ascii.stl",
-                                       "stl_binary/spot.stl", "stl_binary/thingi_1706459.stl"};
+// except the committed known failures below, which must fail cleanly with NoCdtError, never crash
+// or hang: gearwheel's flat faces are coplanar only to within 1e-17, so their long thin triangles
+// need more Steiner points than the budget allows; thingi's refined PLC, with split points rounded
+// off its segments, is not triangulated by the sweep (issue 7 notes).
+const char* kKnownSteinerFailures[] = {"stl_ascii/gearwheel_ascii.stl", "stl_binary/thingi_1706459.stl"};
 
 TEST(SharedMeshes, ValidMeshesGetACdtWithSteinerPoints) {
   const std::filesystem::path data(SWEEPCDT_SHARED_DATA);
@@ -100,7 +101,6 @@ TEST(SharedMeshes, ValidMeshesGetACdtWithSteinerPoints) {
                   known_failure ? " (listed as a known failure: take it off the list)" : "");
     } catch (const NoCdtError& e) {
       EXPECT_TRUE(known_failure) << name << ": " << e.what();
-      if (known_failure) EXPECT_NE(std::string(e.what()).find("does not converge"), std::string::npos) << name << ": " << e.what();
       std::printf("  %-42s %6zu triangles: known failure: %.90s\n", name, plc.num_simplices(), e.what());
     }
   }

@@ -1,5 +1,6 @@
 // Small PLCs used across the tests, built by hand with exactly representable coordinates.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -111,6 +112,100 @@ inline void add_tetrahedron(Plc<3>& plc, std::array<uint32_t, 4> ids) {
     const auto side = predicates::orient<3>({plc.point(f[0]), plc.point(f[1]), plc.point(f[2]), plc.point(ids[i])});
     plc.exterior.push_back(side == predicates::Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
   }
+}
+
+}  // namespace sweepcdt::fixtures
+
+namespace sweepcdt::fixtures {
+
+// The closed surface of a profile extruded along z from 0 to `depth`. The profile is the union of the
+// columns [xs[j], xs[j+1]] x [0, tops[j]] (xs increasing, tops > 0). Caps are triangulated column by
+// column as strips between the two vertical chains of vertices; side walls are two triangles per
+// outline edge. Outward counterclockwise, exterior Negative. Makes combs, slabs and steps.
+inline Plc<3> extruded_columns(const std::vector<double>& xs, const std::vector<double>& tops, double depth) {
+  Plc<3> plc;
+  const std::size_t n = tops.size();
+  // Vertical chain of profile vertices at xs[j]: heights 0 and the tops of the columns beside it.
+  std::vector<std::vector<double>> chain(n + 1);
+  for (std::size_t j = 0; j <= n; ++j) {
+    chain[j].push_back(0.0);
+    if (j > 0) chain[j].push_back(tops[j - 1]);
+    if (j < n) chain[j].push_back(tops[j]);
+    std::sort(chain[j].begin(), chain[j].end());
+    chain[j].erase(std::unique(chain[j].begin(), chain[j].end()), chain[j].end());
+  }
+  // Point ids: index of (j, k) in profile order; layer 0 (z = 0) then layer 1 (z = depth).
+  std::vector<std::vector<uint32_t>> id(n + 1);
+  uint32_t count = 0;
+  for (std::size_t j = 0; j <= n; ++j)
+    for (std::size_t k = 0; k < chain[j].size(); ++k) id[j].push_back(count++);
+  for (int layer = 0; layer < 2; ++layer)
+    for (std::size_t j = 0; j <= n; ++j)
+      for (double y : chain[j]) plc.points.insert(plc.points.end(), {xs[j], y, layer ? depth : 0.0});
+  auto tri = [&](uint32_t a, uint32_t b, uint32_t c) { plc.simplices.insert(plc.simplices.end(), {a, b, c}); };
+  // Caps: column j spans chain j up to tops[j] on the left and chain j+1 up to tops[j] on the right.
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<uint32_t> left, right;  // bottom to top
+    for (std::size_t k = 0; k < chain[j].size() && chain[j][k] <= tops[j]; ++k) left.push_back(id[j][k]);
+    for (std::size_t k = 0; k < chain[j + 1].size() && chain[j + 1][k] <= tops[j]; ++k) right.push_back(id[j + 1][k]);
+    auto height = [&](uint32_t v) { return plc.points[3 * v + 1]; };
+    std::size_t l = 0, r = 0;
+    while (l + 1 < left.size() || r + 1 < right.size()) {
+      const bool up_left = r + 1 == right.size() || (l + 1 < left.size() && height(left[l + 1]) <= height(right[r + 1]));
+      // Counterclockwise in xy (top cap, z = depth), reversed for the bottom cap.
+      const uint32_t a = left[l], b = right[r], c = up_left ? left[l + 1] : right[r + 1];
+      tri(count + a, count + b, count + c);
+      tri(a, c, b);
+      if (up_left) ++l;
+      else ++r;
+    }
+  }
+  // Outline, counterclockwise: along the bottom, then leftwards over the tops; at each xs[j] it
+  // arrives at the top of column j and leaves at the top of column j-1 (no vertex lies between).
+  std::vector<uint32_t> outline;
+  for (std::size_t j = 0; j <= n; ++j) outline.push_back(id[j][0]);
+  auto at_height = [&](std::size_t j, double y) {
+    return id[j][std::lower_bound(chain[j].begin(), chain[j].end(), y) - chain[j].begin()];
+  };
+  for (std::size_t j = n + 1; j-- > 0;) {
+    if (j < n && outline.back() != at_height(j, tops[j])) outline.push_back(at_height(j, tops[j]));
+    if (j > 0 && outline.back() != at_height(j, tops[j - 1])) outline.push_back(at_height(j, tops[j - 1]));
+  }
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const uint32_t p = outline[i], q = outline[(i + 1) % outline.size()];
+    if (p == q) continue;
+    tri(p, q, count + q);
+    tri(p, count + q, count + p);
+  }
+  plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);
+  return plc;
+}
+
+// A triangular prism over the triangle (0,0), (1,0), (1,h) from z = 0 to 1, its side quads split
+// without a cycle: the dihedral angle at the edge through the origin is atan(h).
+inline Plc<3> wedge(double h) {
+  Plc<3> plc;
+  plc.points = {0, 0, 0, 1, 0, 0, 1, h, 0, 0, 0, 1, 1, 0, 1, 1, h, 1};
+  plc.simplices = {0, 2, 1, 3, 4, 5,         // bottom, top
+                   0, 1, 4, 0, 4, 3,         // y = 0 side
+                   1, 2, 5, 1, 5, 4,         // x = 1 side
+                   0, 3, 5, 0, 5, 2};        // slanted side
+  plc.exterior.assign(8, ExteriorSide::Negative);
+  return plc;
+}
+
+// A cone with a sharp apex: a regular k-gon of radius r at z = 0 and the apex (0, 0, 1); the base is
+// fanned from its first vertex. Small angles between the segments at the apex.
+inline Plc<3> needle(int k, double r) {
+  Plc<3> plc;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < k; ++i) plc.points.insert(plc.points.end(), {r * std::cos(2 * pi * i / k), r * std::sin(2 * pi * i / k), 0.0});
+  plc.points.insert(plc.points.end(), {0.0, 0.0, 1.0});
+  const uint32_t apex = static_cast<uint32_t>(k);
+  for (uint32_t i = 0; i < apex; ++i) plc.simplices.insert(plc.simplices.end(), {i, (i + 1) % apex, apex});
+  for (uint32_t i = 1; i + 1 < apex; ++i) plc.simplices.insert(plc.simplices.end(), {0, i + 1, i});
+  plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);
+  return plc;
 }
 
 }  // namespace sweepcdt::fixtures

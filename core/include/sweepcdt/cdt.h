@@ -37,6 +37,8 @@ struct CdtStatistics {
   uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
   uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
   uint64_t steiner_points = 0, steiner_rounds = 0;
+  uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
+                                         // edge flips that gave each its 2D CDT
   double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
 };
 
@@ -46,17 +48,32 @@ struct Progress {
   uint64_t total;     // vertices in all (0 when unknown)
 };
 
-// Steiner points (beyond the paper, D = 3): most real surfaces have no CDT as given.
+// Steiner points (beyond the paper): most real surfaces have no CDT as given. Guarantees by dimension:
+//   D = 2: every PLC has a CDT (segments are always recoverable), so Auto never adds a point.
+//   D = 3: Auto splits the segments (edges of the input facets) that are not Delaunay — with the
+//          concentric-shell rule that protects small input angles — until every segment is an edge of
+//          the (perturbed) Delaunay triangulation of all points; each facet is then re-triangulated by
+//          its own 2D CDT, and Shewchuk's CDT theorem says the refined PLC has a CDT. Steiner points lie
+//          on input segments, rounded to the nearest doubles (within half an ulp per coordinate of a
+//          point of the segment); core/src/steiner/README.md has the details.
+//   D >= 4: not implemented; Auto behaves as None (NoCdtError when no CDT exists).
 enum class SteinerMode {
   None,  // the PLC as given: NoCdtError when it has no CDT (paper §2)
-  Auto,  // split segments that are not strongly Delaunay (at midpoints) until a CDT exists; the
-         // Steiner points follow the input points, each with the input triangle it lies on (to
-         // within rounding: see core/src/steiner/segment_recovery.h)
+  Auto,  // split segments until a CDT exists (see above)
+};
+
+// What the constraining simplices of a D = 3 PLC stand for.
+enum class FacetMode {
+  Triangles,  // each triangle is a facet of its own: every triangle edge is a segment
+  Coplanar,   // edge-adjacent, exactly coplanar triangles with the same exterior side form one polygonal
+              // facet, triangulated anew by its 2D CDT (paper §1: constraining simplices come from the
+              // CDT of each facet); only facet boundaries are segments, so fewer Steiner points
 };
 
 struct Options {
   Algorithm algorithm = Algorithm::SweepSphere;
   SteinerMode steiner = SteinerMode::None;
+  FacetMode facets = FacetMode::Triangles;
   CdtStatistics* statistics = nullptr;  // filled in when set
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;

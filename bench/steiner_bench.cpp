@@ -1,0 +1,69 @@
+// Times cdt() with Steiner points on a surface file and prints one JSON line; optionally writes the
+// welded surface as OFF so bench/run_steiner.py can hand the same input to TetGen.
+//
+//   steiner_bench FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "sweepcdt/cdt.h"
+#include "sweepcdt/io/to_plc.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+void write_off(const std::string& path, const Plc<3>& plc) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "OFF\n" << plc.num_points() << ' ' << plc.num_simplices() << " 0\n";
+  for (std::size_t i = 0; i < plc.num_points(); ++i)
+    out << plc.point(i)[0] << ' ' << plc.point(i)[1] << ' ' << plc.point(i)[2] << '\n';
+  for (std::size_t j = 0; j < plc.num_simplices(); ++j)
+    out << "3 " << plc.simplex(j)[0] << ' ' << plc.simplex(j)[1] << ' ' << plc.simplex(j)[2] << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]\n", argv[0]);
+    return 2;
+  }
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  std::string off;
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i], value = argv[i + 1];
+    if (flag == "--facets") options.facets = value == "coplanar" ? FacetMode::Coplanar : FacetMode::Triangles;
+    else if (flag == "--steiner") options.steiner = value == "none" ? SteinerMode::None : SteinerMode::Auto;
+    else if (flag == "--algorithm")
+      options.algorithm = value == "giftwrap" ? Algorithm::GiftWrap : value == "sweep-plane" ? Algorithm::SweepPlane : Algorithm::SweepSphere;
+    else if (flag == "--off") off = value;
+  }
+  const Plc<3> plc = io::import_plc(argv[1]);
+  if (!off.empty()) write_off(off, plc);
+  CdtStatistics stats;
+  options.statistics = &stats;
+  std::string error;
+  std::size_t tets = 0;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    tets = cdt(plc, options).num_simplices();
+  } catch (const std::exception& e) {
+    error = e.what();
+    for (char& c : error)
+      if (c == '"' || c == '\\') c = '\'';
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "{\"file\": \"%s\", \"points\": %zu, \"triangles\": %zu, \"facets\": %lu, \"steiner_points\": %lu, \"rounds\": %lu, "
+      "\"flips\": %lu, \"tets\": %zu, \"seconds\": %.3f, \"seconds_refine\": %.3f, \"seconds_build\": %.3f, "
+      "\"seconds_finish\": %.3f, \"error\": \"%s\"}\n",
+      argv[1], plc.num_points(), plc.num_simplices(), static_cast<unsigned long>(stats.facets),
+      static_cast<unsigned long>(stats.steiner_points), static_cast<unsigned long>(stats.steiner_rounds),
+      static_cast<unsigned long>(stats.facet_flips), tets, seconds, stats.seconds_setup, stats.seconds_build,
+      stats.seconds_finish, error.c_str());
+  return error.empty() ? 0 : 1;
+}

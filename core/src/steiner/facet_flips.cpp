@@ -1,0 +1,147 @@
+#include "facet_flips.h"
+
+#include <cmath>
+#include <unordered_map>
+
+#include "facet_groups.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
+
+namespace sweepcdt::detail {
+namespace {
+
+using predicates::Sign;
+using Triangle = std::array<uint32_t, 3>;
+
+// The auxiliary point off a facet's plane: its id only orders the perturbation, and it is never the
+// decisive vertex (see facet_flips.h).
+constexpr uint32_t kAuxiliaryId = kNone - 1;
+
+class Flipper {
+ public:
+  explicit Flipper(FacetTriangles f) : f_(f), drop_(f.facet.size(), -1) {
+    for (uint32_t t = 0; t < f_.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const uint64_t key = edge_key(f_.triangles[t][i], f_.triangles[t][(i + 1) % 3]);
+        if (f_.segments.count(key)) continue;
+        auto [it, fresh] = sides_.try_emplace(key, std::array<uint32_t, 2>{t, kNone});
+        if (fresh) pending_.push_back(key);
+        else it->second[1] = t;
+      }
+  }
+
+  uint64_t run() {
+    // Lawson's flips end for exactly coplanar facets; the cap guards facets coplanar only to within
+    // rounding, where the in-circle test is approximate.
+    const uint64_t cap = 50 * uint64_t{f_.triangles.size()} + 1000;
+    uint64_t flips = 0;
+    while (!pending_.empty() && flips < cap) {
+      const uint64_t key = pending_.back();
+      pending_.pop_back();
+      const auto it = sides_.find(key);
+      if (it == sides_.end() || it->second[1] == kNone) continue;
+      if (try_flip(key, it->second[0], it->second[1])) ++flips;
+    }
+    return flips;
+  }
+
+ private:
+  const double* p(uint32_t v) const { return f_.points.data() + 3 * std::size_t{v}; }
+
+  bool on_common_segment(uint32_t c, uint32_t d) const {
+    const auto& sc = f_.on_segment[c];
+    const auto& sd = f_.on_segment[d];
+    if (sc[0] != kNone && (d == sc[0] || d == sc[1] || sd == sc)) return true;
+    return sd[0] != kNone && (c == sd[0] || c == sd[1]);
+  }
+
+  // The coordinate axis to drop so that the facet of triangle t projects without degeneracy.
+  int drop_axis(uint32_t t) {
+    int& drop = drop_[t];
+    if (drop >= 0) return drop;
+    const Triangle& tri = f_.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      if (predicates::orient_projected<3>({p(tri[0]), p(tri[1]), p(tri[2])}, k) != Sign::Zero) {
+        drop = k;
+        // Prefer the axis of the largest normal component (the least distorted projection).
+        const double n[3] = {normal(tri, 0), normal(tri, 1), normal(tri, 2)};
+        int best = 0;
+        for (int a = 1; a < 3; ++a)
+          if (std::abs(n[a]) > std::abs(n[best])) best = a;
+        if (predicates::orient_projected<3>({p(tri[0]), p(tri[1]), p(tri[2])}, best) != Sign::Zero) drop = best;
+        break;
+      }
+    return drop;
+  }
+
+  double normal(const Triangle& t, int axis) const {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const double* a = p(t[0]);
+    const double* b = p(t[1]);
+    const double* c = p(t[2]);
+    return (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
+  }
+
+  bool try_flip(uint64_t key, uint32_t t1, uint32_t t2) {
+    // t1 = (a, b, c) runs a -> b; t2 must run b -> a with third vertex d.
+    Triangle& s = f_.triangles[t1];
+    Triangle& u = f_.triangles[t2];
+    const uint32_t ka = static_cast<uint32_t>(key >> 32), kb = static_cast<uint32_t>(key);
+    int i = 0;
+    while (i < 3 && !((s[i] == ka || s[i] == kb) && (s[(i + 1) % 3] == ka || s[(i + 1) % 3] == kb))) ++i;
+    if (i == 3) return false;
+    const uint32_t a = s[i], b = s[(i + 1) % 3], c = s[(i + 2) % 3];
+    int j = 0;
+    while (j < 3 && !(u[j] == b && u[(j + 1) % 3] == a)) ++j;
+    if (j == 3) return false;  // orientations disagree: not a facet of one orientation
+    const uint32_t d = u[(j + 2) % 3];
+    if (c == d || on_common_segment(c, d)) return false;
+
+    // Strictly convex quadrilateral a, d, b, c in the facet's plane.
+    const int drop = drop_axis(t1);
+    const auto o = [&](uint32_t x, uint32_t y, uint32_t z) {
+      return predicates::orient_projected<3>({p(x), p(y), p(z)}, drop);
+    };
+    const Sign cda = o(c, d, a), cdb = o(c, d, b), abc = o(a, b, c), abd = o(a, b, d);
+    if (cda == Sign::Zero || cdb == Sign::Zero || cda == cdb || abc == Sign::Zero || abd == Sign::Zero || abc == abd)
+      return false;
+
+    // d inside the (perturbed) circumcircle of a, b, c?
+    const Triangle abc_t{a, b, c};
+    double e[3];
+    for (int k = 0; k < 3; ++k) e[k] = p(a)[k] + normal(abc_t, k);
+    if (predicates::orient<3>({p(a), p(b), p(c), e}) == Sign::Zero) return false;
+    if (!predicates::inside_circumsphere<3>({{{p(a), a}, {p(b), b}, {p(c), c}, {e, kAuxiliaryId}}}, {p(d), d}))
+      return false;
+
+    // Flip ab to cd: (c, a, d) and (d, b, c) keep the facet's orientation.
+    s = {c, a, d};
+    u = {d, b, c};
+    sides_.erase(key);
+    sides_[edge_key(c, d)] = {t1, t2};
+    moved(edge_key(a, d), t2, t1);
+    moved(edge_key(b, c), t1, t2);
+    for (uint64_t k : {edge_key(c, a), edge_key(a, d), edge_key(d, b), edge_key(b, c)})
+      if (sides_.count(k)) pending_.push_back(k);
+    return true;
+  }
+
+  // Edge `key` now belongs to triangle `to` instead of `from`.
+  void moved(uint64_t key, uint32_t from, uint32_t to) {
+    const auto it = sides_.find(key);
+    if (it == sides_.end()) return;  // a segment
+    for (uint32_t& t : it->second)
+      if (t == from) t = to;
+  }
+
+  FacetTriangles f_;
+  std::vector<int> drop_;  // per triangle (its facet's projection; triangles of one facet agree)
+  std::unordered_map<uint64_t, std::array<uint32_t, 2>> sides_;  // non-segment edge -> its two triangles
+  std::vector<uint64_t> pending_;
+};
+
+}  // namespace
+
+uint64_t flip_facets_to_cdt(FacetTriangles facets) { return Flipper(facets).run(); }
+
+}  // namespace sweepcdt::detail

@@ -1,0 +1,32 @@
+// Each facet's triangles made its 2D constrained Delaunay triangulation by Lawson's edge flips (paper
+// §1: the constraining simplices of a facet are its own (d-1)-dimensional CDT; the 3D CDT, when it
+// exists, contains exactly these triangles).
+//
+// The in-circle test of four coplanar points a, b, c, d is the 3D insphere test of a, b, c, e, d for
+// any point e off their plane: the sphere through a, b, c, e meets the plane in the circumcircle of
+// a, b, c. Under the lifting-map perturbation (§6) e is never the decisive vertex, because its
+// cofactor is orient(a, b, c, d) = 0, so the 2D answer agrees with the 3D perturbation that the
+// sweep uses. Rounded Steiner points make some facets coplanar only to within rounding; there the
+// same test is a close approximation, and cdt() checks the result exactly anyway.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+namespace sweepcdt::detail {
+
+struct FacetTriangles {
+  const std::vector<double>& points;                 // n x 3
+  std::vector<std::array<uint32_t, 3>>& triangles;   // oriented alike within each facet
+  const std::vector<uint32_t>& facet;                // per triangle
+  const std::unordered_set<uint64_t>& segments;      // never flipped
+  // Per point: the input segment (two input vertex ids, sorted) a Steiner point lies on, or
+  // {kNone, kNone} for input points. A flip never joins two points of one segment.
+  const std::vector<std::array<uint32_t, 2>>& on_segment;
+};
+
+// Flips every facet to its CDT; returns the number of flips.
+uint64_t flip_facets_to_cdt(FacetTriangles facets);
+
+}  // namespace sweepcdt::detail

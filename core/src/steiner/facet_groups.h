@@ -1,0 +1,34 @@
+// Facets of a D = 3 PLC given by triangles, and the segments that bound them.
+//
+// FacetMode::Triangles: every triangle is a facet, every triangle edge a segment.
+// FacetMode::Coplanar: two triangles sharing an edge (and no third triangle on it) are one facet when
+// they are exactly coplanar and have the material on the same side; the triangles of a facet are
+// re-oriented to agree with its first triangle (their exterior notation flipped along), and only the
+// edges on facet boundaries are segments.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::detail {
+
+inline uint64_t edge_key(uint32_t a, uint32_t b) {
+  if (a > b) std::swap(a, b);
+  return (uint64_t{a} << 32) | b;
+}
+
+struct FacetGroups {
+  std::vector<std::array<uint32_t, 3>> triangles;  // the input's triangles, oriented as their facet
+  std::vector<ExteriorSide> exterior;              // per triangle, after re-orientation
+  std::vector<uint32_t> facet;                     // per triangle: its facet, numbered 0..num_facets-1
+  std::vector<uint32_t> first_triangle;            // per facet: its smallest input triangle index
+  std::unordered_set<uint64_t> segments;           // edge_key of every segment
+  std::size_t num_facets() const { return first_triangle.size(); }
+};
+
+FacetGroups group_facets(const Plc<3>& plc, FacetMode mode);
+
+}  // namespace sweepcdt::detail

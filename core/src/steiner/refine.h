@@ -1,0 +1,43 @@
+// Steiner points so that a CDT exists (issue 7, beyond the paper), and coplanar facets (D = 3).
+//
+// Shewchuk's CDT theorem: a PLC has a CDT when every segment is strongly Delaunay. Here the facets
+// are the input triangles (or, with FacetMode::Coplanar, the polygons of exactly coplanar adjacent
+// triangles) and the segments are their boundary edges. Under the lifting-map perturbation of §6
+// the points are in general position for spheres, so "strongly Delaunay" becomes "an edge of the
+// perturbed Delaunay triangulation of all points", which one unconstrained sweep answers for every
+// segment at once. Rounds:
+//   1. Delaunay triangulation of the current points (sweep sphere, no constraints);
+//   2. every segment that is not one of its edges is split — at a power-of-two distance from its
+//      end when exactly one end is an input vertex, at its midpoint otherwise (the concentric-shell
+//      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
+//      about it, so segments at a small angle do not split each other without end);
+//   3. the triangles holding a split segment are split at the new point (facet-interior edges are
+//      not segments: they need not be Delaunay).
+// Then each facet is flipped to its own 2D CDT (facet_flips.h) and cdt() triangulates the result.
+//
+// Exactness: a split point is computed in floating point, so it lies on its segment only as closely
+// as rounding allows (each coordinate within half an ulp of a point of the segment); the refined PLC
+// is checked exactly, and the CDT is exactly that of the refined PLC.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::detail {
+
+struct RefinedPlc {
+  Plc<3> plc;                         // the input's points first, then the Steiner points
+  uint32_t num_input_points = 0;
+  std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding its segment
+  std::vector<std::array<uint32_t, 2>> steiner_segment;  // per Steiner point: its input segment
+  std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
+                                      // coplanar facets: the facet's first input triangle)
+  uint64_t rounds = 0, facets = 0, flips = 0;
+};
+
+// With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar).
+RefinedPlc refine(const Plc<3>& input, const Options& options);
+
+}  // namespace sweepcdt::detail

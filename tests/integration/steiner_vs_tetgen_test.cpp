@@ -1,0 +1,115 @@
+// Steiner points of sweepcdt (SteinerMode::Auto) next to TetGen's on the same inputs (issue 7).
+// `tetgen -pM` keeps the input facets as given (-M: no merging of coplanar facets), so its Steiner
+// points, like ours, are only those its boundary recovery needs. Both counts are printed; ours must
+// stay within 2x TetGen's (+16) on every input TetGen itself handles.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <string>
+
+#include "sweepcdt/cdt.h"
+#include "sweepcdt/io/to_plc.h"
+#include "sweepcdt/validate.h"
+#include "test_shapes.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+void write_off(const std::filesystem::path& path, const Plc<3>& plc) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "OFF\n" << plc.num_points() << ' ' << plc.num_simplices() << " 0\n";
+  for (std::size_t i = 0; i < plc.num_points(); ++i)
+    out << plc.point(i)[0] << ' ' << plc.point(i)[1] << ' ' << plc.point(i)[2] << '\n';
+  for (std::size_t j = 0; j < plc.num_simplices(); ++j)
+    out << "3 " << plc.simplex(j)[0] << ' ' << plc.simplex(j)[1] << ' ' << plc.simplex(j)[2] << '\n';
+}
+
+// TetGen's Steiner points for `plc` (the sum of the "Steiner points ...: N" lines of its report), or
+// nullopt when TetGen fails on it.
+std::optional<long> tetgen_steiner_points(const Plc<3>& plc, const std::string& name) {
+  // TetGen derives its output names from the input's: one plain name per input, in a folder of its own.
+  std::string stem = name;
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  const auto dir = std::filesystem::temp_directory_path() / ("sweepcdt_tetgen_" + std::to_string(::getpid()) + "_" + stem);
+  std::filesystem::create_directories(dir);
+  const auto off = dir / (stem + ".off");
+  write_off(off, plc);
+  const std::string command = "tetgen -pM '" + off.string() + "' 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::string report;
+  char buffer[4096];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) report += buffer;
+  const int status = pipe ? ::pclose(pipe) : -1;
+  std::filesystem::remove_all(dir);
+  if (status != 0) {
+    std::printf("  tetgen -pM on %s failed (status %d): %.200s\n", name.c_str(), status,
+                report.substr(report.size() > 200 ? report.size() - 200 : 0).c_str());
+    return std::nullopt;
+  }
+  long total = 0;
+  const std::regex line(R"(Steiner points[^:\n]*:\s*(\d+))");
+  for (std::sregex_iterator it(report.begin(), report.end(), line), end; it != end; ++it) total += std::stol((*it)[1]);
+  return total;
+}
+
+long our_steiner_points(const Plc<3>& plc, const std::string& name) {
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  CdtStatistics stats;
+  options.statistics = &stats;
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(plc, options, &refined);
+  EXPECT_TRUE(validate_triangulated(tri, refined).ok()) << name;
+  return static_cast<long>(stats.steiner_points);
+}
+
+void compare(const Plc<3>& plc, const std::string& name) {
+  const long ours = our_steiner_points(plc, name);
+  const auto theirs = tetgen_steiner_points(plc, name);
+  if (!theirs) {
+    std::printf("  %-28s %6zu triangles: sweepcdt %5ld Steiner points, tetgen -pM failed\n", name.c_str(), plc.num_simplices(), ours);
+    return;
+  }
+  std::printf("  %-28s %6zu triangles: sweepcdt %5ld Steiner points, tetgen -pM %5ld\n", name.c_str(), plc.num_simplices(), ours, *theirs);
+  EXPECT_LE(ours, 2 * *theirs + 16) << name;
+}
+
+TEST(SteinerVsTetgen, TetgenIsInstalled) {
+  ASSERT_EQ(std::system("command -v tetgen > /dev/null"), 0) << "tetgen not found: scripts/setup.sh installs Debian's tetgen";
+}
+
+TEST(SteinerVsTetgen, GeneratedSurfaces) {
+  compare(fixtures::twisted_prism(0.5), "Schonhardt prism");
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 5; ++fin) {
+    xs.insert(xs.end(), {xs.back() + 0.02, xs.back() + 0.22});
+    tops.insert(tops.end(), {1.0, 0.2});
+  }
+  compare(fixtures::extruded_columns(xs, tops, 1.0), "comb of thin fins");
+  compare(fixtures::extruded_columns({0, 10}, {0.01}, 10.0), "thin slab");
+  compare(fixtures::needle(12, 0.01), "needle");
+  compare(fixtures::grid_box_surface(3), "grid box 3");
+}
+
+TEST(SteinerVsTetgen, SharedMeshes) {
+  const std::filesystem::path data(SWEEPCDT_SHARED_DATA);
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data not found at " << data;
+  for (const char* name : {"off/femur.off", "stl_ascii/t13_data_ascii.stl", "stl_binary/spot.stl", "stl_binary/torus.stl",
+                           "glb/cubevc.glb", "gltf/two_objects_inverse_materials.gltf"}) {
+    if (!std::filesystem::exists(data / name)) {
+      ADD_FAILURE() << "missing shared mesh " << data / name;
+      continue;
+    }
+    compare(io::import_plc(data / name), std::filesystem::path(name).filename().string());
+  }
+}
+
+}  // namespace
