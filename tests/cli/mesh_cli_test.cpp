@@ -1,0 +1,249 @@
+// `sweepcdt INPUT -o OUTPUT`: the shared meshes in every output format (each output verified with
+// `sweepcdt check`, which reads it back), the documented failures (exit 3 bad input, 4 no CDT,
+// 5 unwritable output) leaving no file behind, --stats, and Ctrl-C.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <unistd.h>
+
+#include "cli_run.h"
+#include "sweepcdt/io/volume_mesh.h"
+#include "test_shapes.h"
+
+extern char** environ;
+
+namespace sweepcdt::cli::testing {
+namespace {
+
+const char* const kFormats[] = {"mesh", "vtu", "msh", "msh22", "tetgen", "inp"};
+
+std::string extension(const std::string& format) {
+  if (format == "msh22") return ".msh";
+  if (format == "tetgen") return ".node";
+  return "." + format;
+}
+
+// Every shared mesh that has a CDT, in every format: one batch run per format (two threads), then
+// `check` on every output, which reads it with io::read_volume_mesh and verifies it exactly.
+TEST(CliMesh, SharedMeshesInEveryFormatPassCheck) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  std::string inputs;
+  for (const char* name : kMeshesWithCdt) inputs += " " + quoted(shared_data() / name);
+  for (const std::string format : kFormats) {
+    const auto out = dir.path() / format;
+    const CliRun r = run("mesh" + inputs + " --out-dir " + quoted(out) + " --format " + format + " --threads 2", dir);
+    ASSERT_EQ(r.exit_code, 0) << format << "\n" << r.out;
+    EXPECT_TRUE(r.says(std::to_string(std::size(kMeshesWithCdt)) + " of " + std::to_string(std::size(kMeshesWithCdt)) + " files converted")) << r.out;
+    for (const char* name : kMeshesWithCdt) {
+      const auto output = out / (fs::path(name).stem().string() + extension(format));
+      ASSERT_TRUE(fs::exists(output)) << output << "\n" << r.out;
+      if (format == "tetgen")
+        for (const char* part : {".ele", ".face"}) EXPECT_TRUE(fs::exists(fs::path(output).replace_extension(part))) << output;
+      const CliRun check = run("check " + quoted(shared_data() / name) + " " + quoted(output), dir);
+      EXPECT_EQ(check.exit_code, 0) << name << " as " << format << "\n" << check.out;
+      EXPECT_TRUE(check.says("valid: input vertices identical")) << check.out;
+    }
+  }
+}
+
+// The committed known failures (tests/integration): exit 4 naming the file and why, nothing written.
+TEST(CliMesh, MeshesWithoutCdtExitFourAndWriteNothing) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  for (const char* name : kMeshesWithoutCdt) {
+    const auto input = shared_data() / name;
+    const auto out = dir.path() / "out.mesh";
+    const CliRun r = run(quoted(input) + " -o " + quoted(out), dir);
+    EXPECT_EQ(r.exit_code, 4) << name << "\n" << r.out;
+    EXPECT_TRUE(r.says("sweepcdt: " + input.string() + ": Steiner points: midpoint splitting does not converge")) << r.out;
+    EXPECT_TRUE(r.says("witness vertices")) << r.out;
+    EXPECT_TRUE(files_in(dir.path()).empty()) << name;
+  }
+}
+
+// Every file of bad/: exit 3 with a message that names the file and the problem; nothing written.
+TEST(CliMesh, BadFilesExitThreeNamingTheProblem) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const std::pair<const char*, const char*> expected[] = {{"open_cube.off", "boundary-edge"},
+                                                          {"selfintersect_issue945e_ascii.stl", "self-intersection"},
+                                                          {"car_open_nonmanifold.drc", "non-manifold-vertex"}};
+  std::size_t seen = 0;
+  for (const auto& entry : fs::directory_iterator(shared_data() / "bad")) {
+    const std::string name = entry.path().filename().string();
+    const auto it = std::find_if(std::begin(expected), std::end(expected), [&](const auto& e) { return name == e.first; });
+    ASSERT_NE(it, std::end(expected)) << "bad/" << name << " is new: add what its message must say";
+    ++seen;
+    const CliRun r = run(quoted(entry.path()) + " -o " + quoted(dir.path() / "out.vtu"), dir);
+    EXPECT_EQ(r.exit_code, 3) << name << "\n" << r.out;
+    EXPECT_TRUE(r.says("sweepcdt: " + entry.path().string() + ": not a closed surface bounding a volume:")) << r.out;
+    EXPECT_TRUE(r.says(it->second)) << name << ": expected '" << it->second << "' in\n" << r.out;
+    EXPECT_TRUE(files_in(dir.path()).empty()) << name;
+  }
+  EXPECT_EQ(seen, std::size(expected));
+}
+
+TEST(CliMesh, MalformedAndMissingInputsExitThree) {
+  TempDir dir;
+  const auto bad = dir.write("bad.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n");
+  const CliRun r = run(quoted(bad) + " -o " + quoted(dir.path() / "out.mesh"), dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_TRUE(r.says(bad.string() + ":4:")) << r.out;
+  const CliRun missing = run(quoted(dir.path() / "missing.stl") + " -o " + quoted(dir.path() / "out.mesh"), dir);
+  EXPECT_EQ(missing.exit_code, 3) << missing.out;
+  EXPECT_TRUE(missing.says("missing.stl")) << missing.out;
+  EXPECT_EQ(files_in(dir.path()), std::set<std::string>{"bad.off"});
+}
+
+// Root may write anywhere, so "unwritable" is a folder that is a file: the writer cannot create its
+// temporary file there, and must leave nothing, anywhere.
+TEST(CliMesh, UnwritableOutputExitsFiveAndLeavesNothing) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto blocker = dir.write("not_a_folder", "x");
+  for (const std::string format : kFormats) {
+    const auto out = blocker / ("out" + extension(format));
+    const CliRun r = run(quoted(shared_data() / "off/icosahedron.off") + " -o " + quoted(out) + " --format " + format, dir);
+    EXPECT_EQ(r.exit_code, 5) << format << "\n" << r.out;
+    EXPECT_TRUE(r.says(out.string())) << r.out;
+    EXPECT_EQ(files_in(dir.path()), std::set<std::string>{"not_a_folder"}) << format;
+  }
+  const CliRun batch = run("mesh " + quoted(shared_data() / "off/icosahedron.off") + " --out-dir " + quoted(blocker / "sub"), dir);
+  EXPECT_EQ(batch.exit_code, 5) << batch.out;
+  EXPECT_TRUE(batch.says("cannot create the output folder")) << batch.out;
+}
+
+// Schönhardt's twisted prism has no tetrahedralization without Steiner points.
+fs::path write_schonhardt(const TempDir& dir) {
+  const Plc<3> prism = fixtures::twisted_prism(0.5);
+  std::string off = "OFF\n6 8 0\n";
+  char buf[128];
+  for (uint32_t i = 0; i < 6; ++i) {
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", prism.point(i)[0], prism.point(i)[1], prism.point(i)[2]);
+    off += buf;
+  }
+  for (std::size_t j = 0; j < 8; ++j)
+    off += "3 " + std::to_string(prism.simplex(j)[0]) + " " + std::to_string(prism.simplex(j)[1]) + " " + std::to_string(prism.simplex(j)[2]) + "\n";
+  return dir.write("schonhardt.off", off);
+}
+
+TEST(CliMesh, SchonhardtPrismHasNoCdtWithoutSteinerPoints) {
+  TempDir dir;
+  const auto prism = write_schonhardt(dir);
+  const auto out = dir.path() / "prism.mesh";
+  const CliRun none = run(quoted(prism) + " -o " + quoted(out) + " --steiner none", dir);
+  EXPECT_EQ(none.exit_code, 4) << none.out;
+  EXPECT_TRUE(none.says("sweepcdt: " + prism.string() + ": ")) << none.out;
+  EXPECT_TRUE(none.says("witness vertices")) << none.out;
+  EXPECT_FALSE(fs::exists(out));
+  const CliRun with = run(quoted(prism) + " -o " + quoted(out) + " --check", dir);
+  ASSERT_EQ(with.exit_code, 0) << with.out;
+  EXPECT_TRUE(with.says(", checked (")) << with.out;
+  const io::VolumeMesh mesh = io::read_volume_mesh(out);
+  EXPECT_GT(mesh.num_points(), 6u) << "Steiner points expected";
+  EXPECT_EQ(run("check " + quoted(prism) + " " + quoted(out), dir).exit_code, 0);
+}
+
+TEST(CliMesh, EveryAlgorithmGivesTheSameMesh) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto input = quoted(shared_data() / "glb/cubevc.glb");
+  std::string first;
+  for (const char* algorithm : {"sweep-sphere", "sweep-plane", "giftwrap"}) {
+    const auto out = dir.path() / (std::string(algorithm) + ".mesh");
+    const CliRun r = run(input + " -o " + quoted(out) + " --algorithm " + algorithm, dir);
+    ASSERT_EQ(r.exit_code, 0) << algorithm << "\n" << r.out;
+    EXPECT_TRUE(r.says(std::string("(") + algorithm + ",")) << r.out;
+    if (first.empty()) first = bytes_of(out);
+    else EXPECT_EQ(bytes_of(out), first) << algorithm;
+  }
+}
+
+TEST(CliMesh, StatsAreJsonWithCountsAndTimes) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto input = shared_data() / "off/icosahedron.off";
+  const auto out = dir.path() / "ico.inp";
+  const auto stats_file = dir.path() / "stats.json";
+  const CliRun r = run(quoted(input) + " -o " + quoted(out) + " --stats " + quoted(stats_file) + " --check --algorithm sweep-plane", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto json = nlohmann::json::parse(bytes_of(stats_file));
+  EXPECT_EQ(json["sweepcdt_version"], SWEEPCDT_VERSION);
+  EXPECT_EQ(json["command"], "mesh");
+  EXPECT_EQ(json["algorithm"], "sweep-plane");
+  EXPECT_EQ(json["steiner"], "auto");
+  EXPECT_EQ(json["exit_code"], 0);
+  EXPECT_GT(json["peak_memory_bytes"].get<uint64_t>(), 1u << 20);
+  ASSERT_EQ(json["files"].size(), 1u);
+  const auto& f = json["files"][0];
+  const io::VolumeMesh mesh = io::read_volume_mesh(out);
+  EXPECT_EQ(f["input"], input.string());
+  EXPECT_EQ(f["output"], out.string());
+  EXPECT_EQ(f["format"], "inp");
+  EXPECT_EQ(f["status"], "ok");
+  EXPECT_EQ(f["input_triangles"], 20);
+  EXPECT_EQ(f["input_vertices"], 12);
+  EXPECT_EQ(f["algorithm"], "sweep-plane");
+  EXPECT_EQ(f["steiner_points"], 0);
+  EXPECT_EQ(f["tetrahedra"].get<std::size_t>(), mesh.num_tetrahedra());
+  EXPECT_EQ(f["boundary_triangles"], 20);
+  EXPECT_EQ(f["regions"], 1);
+  EXPECT_EQ(f["validated"], true);
+  for (const char* phase : {"read", "check", "setup", "build", "finish", "validate", "write", "total"}) {
+    ASSERT_TRUE(f["seconds"].contains(phase)) << phase;
+    EXPECT_GE(f["seconds"][phase].get<double>(), 0.0) << phase;
+  }
+  EXPECT_GE(f["seconds"]["total"].get<double>(), f["seconds"]["build"].get<double>());
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"ico.inp", "stats.json"}));  // no temporary left
+
+  // A failure is recorded too, with its status and message.
+  const auto bad = dir.write("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const CliRun failed = run(quoted(bad) + " -o " + quoted(dir.path() / "open.mesh") + " --stats " + quoted(stats_file), dir);
+  EXPECT_EQ(failed.exit_code, 3);
+  const auto failure = nlohmann::json::parse(bytes_of(stats_file));
+  EXPECT_EQ(failure["exit_code"], 3);
+  EXPECT_EQ(failure["files"][0]["status"], "bad-input");
+  EXPECT_NE(failure["files"][0]["message"].get<std::string>().find("boundary-edge"), std::string::npos);
+  EXPECT_FALSE(failure["files"][0].contains("tetrahedra"));
+}
+
+// Ctrl-C during a long run (gift-wrapping the torus takes minutes): exit 130, a message, no output.
+TEST(CliMesh, CtrlCCancelsCleanly) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const std::string input = (shared_data() / "stl_binary/torus.stl").string();
+  const std::string out = (dir.path() / "torus.mesh").string();
+  const std::string log = (dir.path() / ".log").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> words = {SWEEPCDT_CLI, input, "-o", out, "--algorithm", "giftwrap", "--steiner", "none"};
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, SWEEPCDT_CLI, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  const auto sent = std::chrono::steady_clock::now();
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
+  EXPECT_LT(seconds, 10.0) << "cancellation took too long";
+  EXPECT_NE(bytes_of(log).find("cancelled (Ctrl-C): nothing written"), std::string::npos) << bytes_of(log);
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+}  // namespace
+}  // namespace sweepcdt::cli::testing
