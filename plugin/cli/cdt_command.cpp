@@ -57,6 +57,9 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
   r.input_simplices = plc.num_simplices();
   if (format.volume && D != 3)
     throw UsageError(output + ": " + format.word + " holds tetrahedra, but the PLC is " + std::to_string(D) + "-dimensional: use .node or .simplices");
+  if (format.plain == io::TriangulationFormat::NodeEle && D > 3)
+    throw UsageError(output + ": .node/.ele holds triangles (2D) or tetrahedra (3D), but the PLC is " + std::to_string(D) +
+                     "-dimensional: use .simplices");
   if (options.steiner == SteinerMode::Auto && D != 3)
     throw UsageError("--steiner auto is for 3D PLCs; this one is " + std::to_string(D) + "-dimensional");
   Options cdt_options;

@@ -78,14 +78,17 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
   const std::size_t n = input.num_points(), total = mesh.num_points(), m = input.num_simplices();
 
   // 1. Input points.
+  v.steiner_points = total > n ? total - n : 0;
   if (total < n) {
     problems.add("the mesh has " + std::to_string(total) + " vertices, fewer than the input's " + std::to_string(n));
     return v;
   }
   for (uint32_t i = 0; i < n; ++i)
-    if (!same_point(mesh.points.data() + 3 * std::size_t{i}, input.point(i)))
+    if (!same_point(mesh.points.data() + 3 * std::size_t{i}, input.point(i))) {
+      v.input_points_moved = true;
       problems.add("vertex " + std::to_string(i) + " is " + point_text(mesh.points.data() + 3 * std::size_t{i}) + " in the mesh but " +
                    point_text(input.point(i)) + " in the input");
+    }
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
     if (mesh.tetrahedra[t] >= total) {
       problems.add("tetrahedron " + std::to_string(t / 4) + " names vertex " + std::to_string(mesh.tetrahedra[t]) + ", which does not exist");
@@ -94,7 +97,6 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
   if (!v.ok()) return v;
 
   // 2. Steiner points, in the order they were made.
-  v.steiner_points = total - n;
   std::vector<std::vector<OnTriangle>> on(m);  // per input triangle: the points known to lie on it
   std::vector<std::vector<uint32_t>> triangles_of(total);  // per point: the input triangles it lies on
   for (uint32_t j = 0; j < m; ++j)

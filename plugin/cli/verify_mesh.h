@@ -14,6 +14,7 @@ struct MeshVerification {
   std::vector<std::string> problems;  // the first ones, one line each
   std::size_t total_problems = 0;
   // What was found (for the report):
+  bool input_points_moved = false;      // some input vertex differs in the mesh
   std::size_t steiner_points = 0;
   std::size_t steiner_exactly_on = 0;   // Steiner points exactly on their input triangle
   std::size_t boundary_triangles = 0;   // boundary facets of the tetrahedra
