@@ -140,8 +140,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
   install_interrupt_handler();
   FileResult r;
   r.input = input;
-  r.output = output;
-  r.format = format->word;
+  r.outputs.push_back({output, format->word});
   {
     FileProgress progress(console, input, true);
     bool writing = false;

@@ -1,6 +1,9 @@
 #include "convert_surface.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <set>
 
@@ -20,14 +23,28 @@ void fail(FileResult& r, Failure f) {
   r.details = std::move(f.details);
 }
 
+// The files write_volume_mesh() made for `target` (TetGen: three beside each other).
+void remove_mesh_files(const MeshTarget& target) {
+  std::error_code ec;
+  if (target.format != io::MeshFormat::TetGen) {
+    std::filesystem::remove(target.file, ec);
+    return;
+  }
+  std::filesystem::path base(target.file);
+  std::string ext = base.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".node" || ext == ".ele" || ext == ".face") base.replace_extension();
+  for (const char* part : {".node", ".ele", ".face"}) std::filesystem::remove(base.string() + part, ec);
+}
+
 }  // namespace
 
-FileResult convert_surface(const std::string& input, const std::string& output, io::MeshFormat format,
-                           const RunOptions& options, FileProgress& progress) {
+FileResult convert_surface(const std::string& input, const std::vector<MeshTarget>& targets, const RunOptions& options,
+                           FileProgress& progress) {
   FileResult r;
   r.input = input;
-  r.output = output;
-  r.format = io::to_string(format);
+  for (const auto& t : targets) r.outputs.push_back({t.file, io::to_string(t.format)});
+  std::size_t written = 0;
   const auto start = std::chrono::steady_clock::now();
   bool writing = false;
   try {
@@ -73,10 +90,11 @@ FileResult convert_surface(const std::string& input, const std::string& output, 
     progress.phase("writing");
     writing = true;
     const auto t = std::chrono::steady_clock::now();
-    io::write_volume_mesh(output, mesh, format);
+    for (; written < targets.size(); ++written) io::write_volume_mesh(targets[written].file, mesh, targets[written].format);
     r.seconds_write = since(t);
   } catch (...) {
     fail(r, describe_current_exception(input, writing));
+    for (std::size_t k = 0; k < written; ++k) remove_mesh_files(targets[k]);
   }
   r.seconds_total = since(start);
   return r;

@@ -10,9 +10,14 @@
 
 namespace sweepcdt::cli {
 
+struct OutputFile {
+  std::string file;    // the name asked for (TetGen: e.g. the .node file; .ele and .face beside it)
+  std::string format;  // format word ("mesh", "vtu", ..., "node", "simplices")
+};
+
 struct FileResult {
-  std::string input, output;  // output: the name asked for (TetGen: the .node file)
-  std::string format;         // output format word ("mesh", "vtu", ..., "node", "simplices")
+  std::string input;
+  std::vector<OutputFile> outputs;  // as requested: all written (code kOk) or none
   int code = kOk;             // exit code of this file
   std::string message;        // the failure's one line (empty on success)
   std::vector<std::string> details;

@@ -1,15 +1,17 @@
 // Argument handling and the batch loop of `sweepcdt mesh`; one file's work is convert_surface().
 //
-// Batch: one output per input in --out-dir, named after the input's stem. --threads N converts N
+// Several outputs of one input (-o a.mesh -o a.vtu, or --format mesh,vtu in batch) share one CDT.
+// Batch: one output per input and format in --out-dir, named after the input's stem. --threads N converts N
 // files at a time (std::thread, each file on one thread): cdt() is deterministic, so the files are
 // byte-identical to a one-thread run; only the order of the messages may differ.
 #include "mesh_command.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <map>
-#include <optional>
+#include <set>
 #include <ostream>
 #include <thread>
 
@@ -28,9 +30,9 @@ namespace fs = std::filesystem;
 
 struct MeshRequest {
   std::vector<std::string> inputs;
-  std::string output;   // -o
-  std::string out_dir;  // --out-dir
-  std::optional<io::MeshFormat> format;
+  std::vector<std::string> outputs;  // -o, once per output (one input)
+  std::string out_dir;               // --out-dir
+  std::vector<io::MeshFormat> formats;  // --format F[,F...]
   unsigned threads = 1;
   RunOptions options;
 };
@@ -54,19 +56,31 @@ bool compatible(io::MeshFormat named, io::MeshFormat by_extension) {
   return gmsh(named) && gmsh(by_extension);
 }
 
+std::vector<io::MeshFormat> formats_named(const std::string& list) {
+  std::vector<io::MeshFormat> formats;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = list.find(',', start);
+    const std::string word = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto f = io::mesh_format_named(word);
+    if (!f) throw UsageError("unknown --format '" + word + "' (mesh, vtu, msh, msh22, tetgen, inp)");
+    if (std::find(formats.begin(), formats.end(), *f) == formats.end()) formats.push_back(*f);
+    if (comma == std::string::npos) return formats;
+    start = comma + 1;
+  }
+}
+
 MeshRequest parse(const std::vector<std::string>& words) {
   MeshRequest req;
   ArgReader args(words);
   std::string v;
   while (!args.done()) {
     if (args.value("-o", v) || args.value("--output", v)) {
-      if (!req.output.empty()) throw UsageError("-o given twice");
-      req.output = v;
+      req.outputs.push_back(v);
     } else if (args.value("--out-dir", v)) {
       req.out_dir = v;
     } else if (args.value("--format", v)) {
-      req.format = io::mesh_format_named(v);
-      if (!req.format) throw UsageError("unknown --format '" + v + "' (mesh, vtu, msh, msh22, tetgen, inp)");
+      req.formats = formats_named(v);
     } else if (args.value("--threads", v)) {
       req.threads = parse_count("--threads", v, 256);
     } else if (read_run_option(args, req.options)) {
@@ -77,33 +91,56 @@ MeshRequest parse(const std::vector<std::string>& words) {
     }
   }
   if (req.inputs.empty()) throw UsageError("no INPUT given");
-  if (req.output.empty() == req.out_dir.empty()) throw UsageError("give either -o OUTPUT (one input) or --out-dir DIR");
-  if (!req.output.empty()) {
-    if (req.inputs.size() > 1) throw UsageError("-o takes one INPUT; for several use --out-dir DIR");
-    const auto by_extension = io::mesh_format_of(req.output);
-    if (!req.format && !by_extension)
-      throw UsageError("cannot tell the format of '" + req.output + "' from its extension: use --format or .mesh .vtu .msh .node .inp");
-    if (req.format && by_extension && !compatible(*req.format, *by_extension))
-      throw UsageError("'" + req.output + "' looks like " + io::to_string(*by_extension) + " but --format says " + io::to_string(*req.format));
-    if (!req.format) req.format = by_extension;
-  } else if (!req.format) {
-    req.format = io::MeshFormat::Medit;  // batch default, documented in the help
+  if (req.outputs.empty() == req.out_dir.empty()) throw UsageError("give either -o OUTPUT (one input) or --out-dir DIR");
+  if (req.out_dir.empty() && req.inputs.size() > 1) throw UsageError("-o takes one INPUT; for several use --out-dir DIR");
+  if (req.formats.empty() && !req.out_dir.empty()) req.formats = {io::MeshFormat::Medit};  // batch default, documented
+  if (!req.out_dir.empty()) {
+    for (std::size_t a = 0; a < req.formats.size(); ++a)
+      for (std::size_t b = 0; b < a; ++b)
+        if (std::string(extension_of(req.formats[a])) == extension_of(req.formats[b]))
+          throw UsageError(std::string("--format ") + io::to_string(req.formats[b]) + " and " + io::to_string(req.formats[a]) + " both write " +
+                           extension_of(req.formats[a]) + " files");
   }
+  if (!req.outputs.empty() && req.formats.size() > 1) throw UsageError("with -o, --format names one format (the outputs' extensions name the others)");
   return req;
 }
 
-// The output of each input; two inputs with one stem would overwrite each other: a usage error.
-std::vector<std::string> output_names(const MeshRequest& req) {
-  if (!req.output.empty()) return {req.output};
-  std::vector<std::string> names;
+// Each input's outputs. Batch: DIR/<stem>.<ext> per format; two inputs with one stem would
+// overwrite each other, which is a usage error.
+std::vector<std::vector<MeshTarget>> targets_of(const MeshRequest& req) {
+  if (!req.outputs.empty()) {
+    std::vector<MeshTarget> targets;
+    std::set<std::string> seen;
+    for (const auto& output : req.outputs) {
+      const auto by_extension = io::mesh_format_of(output);
+      if (req.formats.empty() && !by_extension)
+        throw UsageError("cannot tell the format of '" + output + "' from its extension: use --format or .mesh .vtu .msh .node .inp");
+      if (!req.formats.empty() && by_extension && !compatible(req.formats[0], *by_extension))
+        throw UsageError("'" + output + "' looks like " + io::to_string(*by_extension) + " but --format says " + io::to_string(req.formats[0]));
+      if (!seen.insert(output).second) throw UsageError("-o '" + output + "' given twice");
+      targets.push_back({output, req.formats.empty() ? *by_extension : req.formats[0]});
+    }
+    return {targets};
+  }
+  std::vector<std::vector<MeshTarget>> all;
   std::map<std::string, std::string> taken;
   for (const auto& input : req.inputs) {
-    const std::string name = (fs::path(req.out_dir) / fs::path(input).stem()).string() + extension_of(*req.format);
-    const auto [it, fresh] = taken.emplace(name, input);
-    if (!fresh) throw UsageError("'" + it->second + "' and '" + input + "' would both be written to '" + name + "'");
-    names.push_back(name);
+    std::vector<MeshTarget> targets;
+    for (const io::MeshFormat format : req.formats) {
+      const std::string name = (fs::path(req.out_dir) / fs::path(input).stem()).string() + extension_of(format);
+      const auto [it, fresh] = taken.emplace(name, input);
+      if (!fresh) throw UsageError("'" + it->second + "' and '" + input + "' would both be written to '" + name + "'");
+      targets.push_back({name, format});
+    }
+    all.push_back(std::move(targets));
   }
-  return names;
+  return all;
+}
+
+std::string names_of(const std::vector<OutputFile>& outputs) {
+  std::string s;
+  for (const auto& o : outputs) s += (s.empty() ? "" : ", ") + o.file;
+  return s;
 }
 
 }  // namespace
@@ -115,10 +152,10 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
       return kOk;
     }
   MeshRequest req;
-  std::vector<std::string> outputs;
+  std::vector<std::vector<MeshTarget>> targets;
   try {
     req = parse(words);
-    outputs = output_names(req);
+    targets = targets_of(req);
   } catch (const UsageError& e) {
     err << "sweepcdt: " << e.what() << "\n" << mesh_usage();
     return kUsage;
@@ -145,10 +182,10 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
       started[i] = 1;
       const std::string label = n > 1 ? "[" + std::to_string(i + 1) + "/" + std::to_string(n) + "] " + req.inputs[i] : req.inputs[i];
       FileProgress progress(console, label, threads == 1);
-      results[i] = convert_surface(req.inputs[i], outputs[i], *req.format, req.options, progress);
+      results[i] = convert_surface(req.inputs[i], targets[i], req.options, progress);
       const FileResult& r = results[i];
       if (r.code == kOk) {
-        if (!req.options.quiet) console.line(label + " -> " + r.output + ": " + summary_of(r));
+        if (!req.options.quiet) console.line(label + " -> " + names_of(r.outputs) + ": " + summary_of(r));
       } else {
         console.line("sweepcdt: " + r.message);
         if (!req.options.quiet)
@@ -169,8 +206,7 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
   for (std::size_t i = 0; i < n; ++i) {
     if (!started[i]) {
       results[i].input = req.inputs[i];
-      results[i].output = outputs[i];
-      results[i].format = io::to_string(*req.format);
+      for (const auto& t : targets[i]) results[i].outputs.push_back({t.file, io::to_string(t.format)});
       results[i].code = kCancelled;
       results[i].message = "not started (cancelled)";
       ++not_started;

@@ -29,8 +29,8 @@ const char* status_word(int code) {
 nlohmann::ordered_json file_json(const FileResult& r) {
   nlohmann::ordered_json j;
   j["input"] = r.input;
-  j["output"] = r.output;
-  j["format"] = r.format;
+  j["outputs"] = nlohmann::ordered_json::array();
+  for (const OutputFile& o : r.outputs) j["outputs"].push_back({{"file", o.file}, {"format", o.format}});
   j["status"] = status_word(r.code);
   j["exit_code"] = r.code;
   if (!r.message.empty()) j["message"] = r.message;

@@ -18,7 +18,7 @@ std::string exit_codes_text() {
 
 std::string mesh_usage() {
   return "usage: sweepcdt INPUT -o OUTPUT [options]           (same as: sweepcdt mesh INPUT -o OUTPUT)\n"
-         "       sweepcdt mesh INPUT... --out-dir DIR [--format F] [--threads N] [options]\n";
+         "       sweepcdt mesh INPUT... --out-dir DIR [--format F[,F...]] [--threads N] [options]\n";
 }
 
 std::string mesh_help() {
@@ -27,11 +27,13 @@ std::string mesh_help() {
          "into volume meshes: the constrained Delaunay tetrahedralization with the input triangles as faces.\n"
          "\n"
          "output:\n"
-         "  -o, --output FILE   one input: the output file; its extension gives the format\n"
+         "  -o, --output FILE   one input: the output file; its extension gives the format. Repeat it\n"
+         "                      for several formats from one computation (-o a.mesh -o a.vtu)\n"
          "  --out-dir DIR       any number of inputs: DIR/<input stem>.<ext> each (DIR is created)\n"
-         "  --format F          mesh (Medit), vtu (VTK XML), msh (Gmsh 4.1), msh22 (Gmsh 2.2),\n"
-         "                      tetgen (.node/.ele/.face), inp (Abaqus/CalculiX); default from -o's\n"
-         "                      extension, mesh with --out-dir\n"
+         "  --format F[,F...]   mesh (Medit), vtu (VTK XML), msh (Gmsh 4.1), msh22 (Gmsh 2.2),\n"
+         "                      tetgen (.node/.ele/.face), inp (Abaqus/CalculiX, coordinates rounded\n"
+         "                      to CalculiX's 20-character fields); default from -o's extension, mesh\n"
+         "                      with --out-dir; a list (--format mesh,vtu) only with --out-dir\n"
          "  --threads N         convert N files at a time (output identical to one thread)\n"
          "computation:\n"
          "  --algorithm A       sweep-sphere (default), sweep-plane, giftwrap (slow reference)\n"
@@ -46,7 +48,8 @@ std::string mesh_help() {
          "\n"
          "Progress: a bar on stderr when it is a terminal and a file takes over a second, log lines\n"
          "otherwise. Ctrl-C cancels cleanly (exit 130, no partial output). Outputs are written to a\n"
-         "temporary file and renamed, so a failure never leaves a partial mesh under the output's name.\n"
+         "temporary file and renamed, so a failure never leaves a partial mesh under the output's name;\n"
+         "an input that fails leaves none of its outputs. Messages go to stderr.\n"
          "\n" +
          exit_codes_text();
 }

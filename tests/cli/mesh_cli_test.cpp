@@ -31,29 +31,33 @@ std::string extension(const std::string& format) {
   return "." + format;
 }
 
-// Every shared mesh that has a CDT, in every format: one batch run per format (two threads), then
-// `check` on every output, which reads it with io::read_volume_mesh and verifies it exactly.
+// Every shared mesh that has a CDT, in every format: two batch runs (two threads; msh and msh22 both
+// write .msh, so they cannot share a folder), then `check` on every output, which reads it back with
+// io::read_volume_mesh and verifies it exactly.
 TEST(CliMesh, SharedMeshesInEveryFormatPassCheck) {
   SWEEPCDT_REQUIRE_SHARED_DATA();
   TempDir dir;
   std::string inputs;
   for (const char* name : kMeshesWithCdt) inputs += " " + quoted(shared_data() / name);
-  for (const std::string format : kFormats) {
-    const auto out = dir.path() / format;
-    const CliRun r = run("mesh" + inputs + " --out-dir " + quoted(out) + " --format " + format + " --threads 2", dir);
-    ASSERT_EQ(r.exit_code, 0) << format << "\n" << r.out;
-    EXPECT_TRUE(r.says(std::to_string(std::size(kMeshesWithCdt)) + " of " + std::to_string(std::size(kMeshesWithCdt)) + " files converted")) << r.out;
-    for (const char* name : kMeshesWithCdt) {
-      const auto output = out / (fs::path(name).stem().string() + extension(format));
-      ASSERT_TRUE(fs::exists(output)) << output << "\n" << r.out;
+  const std::string n = std::to_string(std::size(kMeshesWithCdt));
+  for (const std::string formats : {"mesh,vtu,msh,tetgen,inp", "msh22"}) {
+    const auto out = dir.path() / formats;
+    const CliRun r = run("mesh" + inputs + " --out-dir " + quoted(out) + " --format " + formats + " --threads 2", dir);
+    ASSERT_EQ(r.exit_code, 0) << formats << "\n" << r.out;
+    EXPECT_TRUE(r.says(n + " of " + n + " files converted")) << r.out;
+  }
+  for (const char* name : kMeshesWithCdt) {
+    const std::string stem = fs::path(name).stem().string();
+    const auto exact = io::read_volume_mesh(dir.path() / "mesh,vtu,msh,tetgen,inp" / (stem + ".mesh")).points;
+    for (const std::string format : kFormats) {
+      const auto output = dir.path() / (format == "msh22" ? "msh22" : "mesh,vtu,msh,tetgen,inp") / (stem + extension(format));
+      ASSERT_TRUE(fs::exists(output)) << output;
       if (format == "tetgen")
         for (const char* part : {".ele", ".face"}) EXPECT_TRUE(fs::exists(fs::path(output).replace_extension(part))) << output;
       const CliRun check = run("check " + quoted(shared_data() / name) + " " + quoted(output), dir);
       // Abaqus .inp rounds coordinates that do not fit CalculiX's 20-character fields (io's
       // write_abaqus.cpp): such a file is not exactly the CDT, and check must say so.
-      const bool rounded = format == "inp" && io::read_volume_mesh(output).points != io::read_volume_mesh(out.parent_path() / "mesh" /
-                                                                                                      (fs::path(name).stem().string() + ".mesh")).points;
-      if (rounded) {
+      if (format == "inp" && io::read_volume_mesh(output).points != exact) {
         EXPECT_EQ(check.exit_code, 6) << name << " as " << format << "\n" << check.out;
         EXPECT_TRUE(check.says("rounds coordinates")) << check.out;
         continue;
@@ -64,19 +68,40 @@ TEST(CliMesh, SharedMeshesInEveryFormatPassCheck) {
   }
 }
 
+// Several outputs of one input: one computation; if one cannot be written, none is left.
+TEST(CliMesh, SeveralOutputsAllOrNone) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto input = quoted(shared_data() / "drc/cube_att.drc");
+  const CliRun r = run(input + " -o " + quoted(dir.path() / "a.mesh") + " -o " + quoted(dir.path() / "a.node") + " -o " +
+                           quoted(dir.path() / "a.msh"),
+                       dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"a.mesh", "a.node", "a.ele", "a.face", "a.msh"}));
+  const auto blocker = dir.write("blocker", "x");
+  const CliRun failed = run(input + " -o " + quoted(dir.path() / "b.mesh") + " -o " + quoted(dir.path() / "b.node") + " -o " +
+                                quoted(blocker / "b.vtu"),
+                            dir);
+  EXPECT_EQ(failed.exit_code, 5) << failed.out;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"a.mesh", "a.node", "a.ele", "a.face", "a.msh", "blocker"})) << failed.out;
+}
+
 // The committed known failures (tests/integration): exit 4 naming the file and why, nothing written.
+// One batch run, two at a time: each takes seconds to give up.
 TEST(CliMesh, MeshesWithoutCdtExitFourAndWriteNothing) {
   SWEEPCDT_REQUIRE_SHARED_DATA();
   TempDir dir;
+  std::string inputs;
+  for (const char* name : kMeshesWithoutCdt) inputs += " " + quoted(shared_data() / name);
+  const auto out = dir.path() / "out";
+  const CliRun r = run("mesh" + inputs + " --out-dir " + quoted(out) + " --format vtu,tetgen --threads 2", dir);
+  EXPECT_EQ(r.exit_code, 4) << r.out;
   for (const char* name : kMeshesWithoutCdt) {
-    const auto input = shared_data() / name;
-    const auto out = dir.path() / "out.mesh";
-    const CliRun r = run(quoted(input) + " -o " + quoted(out), dir);
-    EXPECT_EQ(r.exit_code, 4) << name << "\n" << r.out;
-    EXPECT_TRUE(r.says("sweepcdt: " + input.string() + ": Steiner points: midpoint splitting does not converge")) << r.out;
-    EXPECT_TRUE(r.says("witness vertices")) << r.out;
-    EXPECT_TRUE(files_in(dir.path()).empty()) << name;
+    EXPECT_TRUE(r.says("sweepcdt: " + (shared_data() / name).string() + ": Steiner points: midpoint splitting does not converge")) << name << "\n" << r.out;
   }
+  EXPECT_TRUE(r.says("witness vertices")) << r.out;
+  EXPECT_TRUE(r.says("0 of " + std::to_string(std::size(kMeshesWithoutCdt)) + " files converted")) << r.out;
+  EXPECT_TRUE(files_in(out).empty());
 }
 
 // Every file of bad/: exit 3 with a message that names the file and the problem; nothing written.
@@ -205,8 +230,9 @@ TEST(CliMesh, StatsAreJsonWithCountsAndTimes) {
   const auto& f = json["files"][0];
   const io::VolumeMesh mesh = io::read_volume_mesh(out);
   EXPECT_EQ(f["input"], input.string());
-  EXPECT_EQ(f["output"], out.string());
-  EXPECT_EQ(f["format"], "inp");
+  ASSERT_EQ(f["outputs"].size(), 1u);
+  EXPECT_EQ(f["outputs"][0]["file"], out.string());
+  EXPECT_EQ(f["outputs"][0]["format"], "inp");
   EXPECT_EQ(f["status"], "ok");
   EXPECT_EQ(f["input_triangles"], 20);
   EXPECT_EQ(f["input_vertices"], 12);
