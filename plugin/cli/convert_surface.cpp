@@ -103,7 +103,8 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
 std::string summary_of(const FileResult& r) {
   char buf[96];
   std::snprintf(buf, sizeof buf, " (%s, %.2f s)", to_string(r.cdt.algorithm), r.seconds_total);
-  std::string s = std::to_string(r.simplices) + (r.dimension == 3 ? " tetrahedra" : " simplices");
+  const char* what = r.dimension == 2 ? " triangles" : r.dimension == 3 ? " tetrahedra" : " simplices";
+  std::string s = std::to_string(r.simplices) + what;
   if (r.dimension == 3) s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
   if (r.validated) s += ", checked";
   return s + buf;
