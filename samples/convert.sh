@@ -8,8 +8,8 @@ sweepcdt="${SWEEPCDT:-build/plugin/cli/sweepcdt}"
 out="${1:-sample-output}"
 mkdir -p "$out"
 
-"$sweepcdt" samples/data/knot1.drc -o "$out/knot1.mesh"              # Medit (format from the extension)
-"$sweepcdt" samples/data/knot1.drc -o "$out/knot1.vtu"               # VTK XML, opens in ParaView
+# Medit .mesh and VTK .vtu (ParaView) from one computation; the format comes from the extension.
+"$sweepcdt" samples/data/knot1.drc -o "$out/knot1.mesh" -o "$out/knot1.vtu"
 "$sweepcdt" samples/data/icosahedron.off -o "$out/icosahedron.msh" --format msh22   # Gmsh 2.2
 "$sweepcdt" samples/data/icosahedron.off -o "$out/icosahedron.node"  # TetGen .node/.ele/.face
 "$sweepcdt" samples/data/icosahedron.off -o "$out/icosahedron.inp" --check   # Abaqus, validated before writing
