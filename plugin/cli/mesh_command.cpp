@@ -180,7 +180,8 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
   const auto work = [&] {
     for (std::size_t i; (i = next++) < n && !interrupted();) {
       started[i] = 1;
-      const std::string label = n > 1 ? "[" + std::to_string(i + 1) + "/" + std::to_string(n) + "] " + req.inputs[i] : req.inputs[i];
+      std::string label = req.inputs[i];
+      if (n > 1) label.insert(0, std::string(1, '[').append(std::to_string(i + 1)).append("/").append(std::to_string(n)).append("] "));
       FileProgress progress(console, label, threads == 1);
       results[i] = convert_surface(req.inputs[i], targets[i], req.options, progress);
       const FileResult& r = results[i];

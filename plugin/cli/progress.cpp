@@ -56,10 +56,6 @@ void Console::bar(const std::string& text) {
 FileProgress::FileProgress(Console& console, std::string label, bool bar)
     : console_(console), label_(std::move(label)), bar_(bar && console.terminal()) {}
 
-FileProgress::~FileProgress() {
-  if (bar_ && last_draw_ >= 0) console_.bar("");  // leave a clean line for the summary
-}
-
 double FileProgress::elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
 void FileProgress::phase(const std::string& name) { report(name, 0, 0); }
@@ -83,10 +79,15 @@ void FileProgress::report(const std::string& phase, uint64_t done, uint64_t tota
     phase_ = phase;
     char buf[64];
     std::string text = label_ + ": " + phase + " ";
-    if (total > 0) {
+    if (phase == "steiner points") {
+      // Between the sweeps of Steiner refinement, core reports the segments still to split, which
+      // shrink towards 0 — a count, not a fraction.
+      text += std::to_string(done) + " segments to split";
+    } else if (total > 0) {
       const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
       const int filled = static_cast<int>(f * kBarWidth);
-      text += "[" + std::string(filled, '#') + std::string(kBarWidth - filled, '.') + "]";
+      text += '[';
+      text.append(filled, '#').append(kBarWidth - filled, '.') += ']';
       std::snprintf(buf, sizeof buf, " %3.0f%%", 100 * f);
       text += buf;
     }

@@ -47,8 +47,8 @@ class Console {
 class FileProgress {
  public:
   // `bar`: draw a bar (only one file runs at a time); else log lines.
+  // The bar stays until the next Console::line() (the file's summary or error) replaces it.
   FileProgress(Console& console, std::string label, bool bar);
-  ~FileProgress();
   // Phases without a callback of their own ("reading", "writing").
   void phase(const std::string& name);
   // For Options::progress.

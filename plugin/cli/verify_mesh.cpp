@@ -50,7 +50,10 @@ std::string point_text(const double* p) {
 
 std::string ids_text(const uint32_t* ids, int n) {
   std::string s;
-  for (int i = 0; i < n; ++i) s += (i ? " " : "") + std::to_string(ids[i]);
+  for (int i = 0; i < n; ++i) {
+    if (i) s += ' ';
+    s += std::to_string(ids[i]);
+  }
   return s;
 }
 
