@@ -14,6 +14,7 @@ packages=(
   libdraco-dev draco    # io: Draco .drc and KHR_draco_mesh_compression; draco_encoder for round-trip tests
   libtinygltf-dev nlohmann-json3-dev   # io: glTF 2.0 (tinygltf is compiled in io/src/tinygltf_impl.cpp)
   clang-14 libclang-rt-14-dev   # tests/fuzz: libFuzzer targets (cmake -DSWEEPCDT_FUZZ=ON with clang)
+  python3-meshio gmsh calculix-ccx   # tests/io: independent readers of the volume meshes written (and tetgen above)
 )
 
 missing=()

@@ -1,0 +1,46 @@
+// TetGen .node / .ele / .face (as `tetgen -r` reads them back, and TetView, meshio).
+//   .node  n 3 0 0            then: id x y z                  (ids 1-based)
+//   .ele   t 4 1              then: id a b c d region+1       (positive volume; attribute = region)
+//   .face  b 1                then: id a b c tag+1            (boundary, counterclockwise seen from
+//                                                              outside; marker 0 = no tag)
+// All three are always written (an empty .face for a mesh without boundary), so no stale file of an
+// earlier run is left beside them.
+#include "volume_mesh_formats.h"
+
+namespace sweepcdt::io::detail {
+
+TetGenFiles tetgen_texts(const VolumeMesh& m) {
+  TetGenFiles f;
+  f.node = std::to_string(m.num_points()) + " 3 0 0\n";
+  for (std::size_t i = 0; i < m.num_points(); ++i) {
+    append_int(f.node, static_cast<int64_t>(i) + 1);
+    f.node += ' ';
+    append_point(f.node, m, i);
+    f.node += '\n';
+  }
+  f.ele = std::to_string(m.num_tetrahedra()) + " 4 1\n";
+  for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) {
+    append_int(f.ele, static_cast<int64_t>(t) + 1);
+    for (uint32_t v : file_order(&m.tetrahedra[4 * t])) {
+      f.ele += ' ';
+      append_int(f.ele, int64_t{v} + 1);
+    }
+    f.ele += ' ';
+    append_int(f.ele, int64_t{m.regions[t]} + 1);
+    f.ele += '\n';
+  }
+  f.face = std::to_string(m.num_boundary()) + " 1\n";
+  for (std::size_t b = 0; b < m.num_boundary(); ++b) {
+    append_int(f.face, static_cast<int64_t>(b) + 1);
+    for (int k = 0; k < 3; ++k) {
+      f.face += ' ';
+      append_int(f.face, int64_t{m.boundary[3 * b + k]} + 1);
+    }
+    f.face += ' ';
+    append_int(f.face, file_tag(m.boundary_tags[b]));
+    f.face += '\n';
+  }
+  return f;
+}
+
+}  // namespace sweepcdt::io::detail

@@ -1,0 +1,183 @@
+// The runtime dimension of the file is dispatched once, here (std::visit over io::AnyPlc), into
+// cdt<D>; the output is Triangle/TetGen .node/.ele, sweepcdt .simplices, or in 3D a volume format.
+#include "cdt_command.h"
+
+#include <chrono>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <variant>
+
+#include "args.h"
+#include "convert_surface.h"
+#include "errors.h"
+#include "exit_codes.h"
+#include "progress.h"
+#include "stats.h"
+#include "sweepcdt/io/plc_file.h"
+#include "sweepcdt/io/volume_mesh.h"
+#include "usage.h"
+
+namespace sweepcdt::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Either a plain triangulation format (any D) or a volume-mesh format (D = 3).
+struct OutputFormat {
+  std::optional<io::TriangulationFormat> plain;
+  std::optional<io::MeshFormat> volume;
+  std::string word;
+};
+
+std::optional<OutputFormat> format_named(const std::string& word) {
+  if (word == "node" || word == "ele") return OutputFormat{io::TriangulationFormat::NodeEle, std::nullopt, "node"};
+  if (word == "simplices") return OutputFormat{io::TriangulationFormat::Simplices, std::nullopt, "simplices"};
+  if (const auto f = io::mesh_format_named(word)) return OutputFormat{std::nullopt, *f, io::to_string(*f)};
+  return std::nullopt;
+}
+
+std::optional<OutputFormat> format_of(const std::string& file) {
+  const std::string ext = fs::path(file).extension().string();
+  if (ext == ".node" || ext == ".ele") return format_named("node");
+  if (ext == ".simplices") return format_named("simplices");
+  if (const auto f = io::mesh_format_of(file)) return OutputFormat{std::nullopt, *f, io::to_string(*f)};
+  return std::nullopt;
+}
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+template <int D>
+void triangulate(const Plc<D>& plc, const std::string& output, const OutputFormat& format, const RunOptions& options,
+                 FileProgress& progress, FileResult& r, bool& writing) {
+  r.dimension = D;
+  r.input_points = plc.num_points();
+  r.input_simplices = plc.num_simplices();
+  if (format.volume && D != 3)
+    throw UsageError(output + ": " + format.word + " holds tetrahedra, but the PLC is " + std::to_string(D) + "-dimensional: use .node or .simplices");
+  if (format.plain == io::TriangulationFormat::NodeEle && D > 3)
+    throw UsageError(output + ": .node/.ele holds triangles (2D) or tetrahedra (3D), but the PLC is " + std::to_string(D) +
+                     "-dimensional: use .simplices");
+  if (options.steiner == SteinerMode::Auto && D != 3)
+    throw UsageError("--steiner auto is for 3D PLCs; this one is " + std::to_string(D) + "-dimensional");
+  Options cdt_options;
+  cdt_options.algorithm = options.algorithm;
+  cdt_options.steiner = options.steiner;
+  cdt_options.statistics = &r.cdt;
+  cdt_options.progress = progress.callback();
+  Plc<D> triangulated;
+  const Triangulation<D> tri = cdt(plc, cdt_options, &triangulated);
+  r.computed = true;
+  r.simplices = tri.num_simplices();
+  if (options.check) {
+    progress.phase("validating");
+    const auto t = std::chrono::steady_clock::now();
+    const ValidationReport report = validate_triangulated(tri, triangulated);
+    r.seconds_validate = since(t);
+    if (!report.ok()) {
+      r.code = kNotValid;
+      r.message = r.input + ": --check: the computed triangulation is not a valid CDT; nothing written";
+      for (const auto& f : report.failures) r.details.push_back(r.input + ": " + f.check + ": " + f.detail);
+      return;
+    }
+    r.validated = true;
+  }
+  throw_if_interrupted();
+  progress.phase("writing");
+  const auto t = std::chrono::steady_clock::now();
+  writing = true;
+  if constexpr (D == 3) {
+    if (format.volume) {
+      const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
+      r.boundary_triangles = mesh.num_boundary();
+      r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
+      io::write_volume_mesh(output, mesh, *format.volume);
+      r.seconds_write = since(t);
+      return;
+    }
+  }
+  io::write_triangulation<D>(output, tri, *format.plain);
+  r.seconds_write = since(t);
+}
+
+}  // namespace
+
+int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
+  std::string input, output;
+  std::optional<OutputFormat> format;
+  RunOptions options;
+  options.steiner = SteinerMode::None;  // a PLC is meant exactly as given; Steiner points on request
+  try {
+    ArgReader args(words);
+    std::string v;
+    while (!args.done()) {
+      if (args.flag("--help") || args.flag("-h")) {
+        out << cdt_help();
+        return kOk;
+      }
+      if (args.value("-o", v) || args.value("--output", v)) output = v;
+      else if (args.value("--format", v)) {
+        format = format_named(v);
+        if (!format) throw UsageError("unknown --format '" + v + "' (node, simplices; 3D: mesh, vtu, msh, msh22, tetgen, inp)");
+      } else if (read_run_option(args, options)) {
+      } else if (args.at_option()) throw UsageError("unknown option '" + args.peek() + "'");
+      else if (input.empty()) input = args.take();
+      else throw UsageError("cdt takes one FILE");
+    }
+    if (input.empty()) throw UsageError("no FILE given");
+    if (output.empty()) throw UsageError("no -o OUTPUT given");
+    if (!format) format = format_of(output);
+    if (!format) throw UsageError("cannot tell the format of '" + output + "' from its extension: use --format or .node .simplices (3D: .mesh .vtu .msh .inp)");
+  } catch (const UsageError& e) {
+    err << "sweepcdt: " << e.what() << "\n" << cdt_usage();
+    return kUsage;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  Console console(err, options.quiet);
+  install_interrupt_handler();
+  FileResult r;
+  r.input = input;
+  r.outputs.push_back({output, format->word});
+  {
+    FileProgress progress(console, input, true);
+    bool writing = false;
+    try {
+      progress.phase("reading");
+      const io::AnyPlc plc = io::read_plc_file(input);
+      r.seconds_read = since(start);
+      std::visit([&](const auto& p) { triangulate(p, output, *format, options, progress, r, writing); }, plc);
+    } catch (const UsageError& e) {
+      console.line(std::string("sweepcdt: ") + e.what());
+      return kUsage;
+    } catch (...) {
+      const Failure f = describe_current_exception(input, writing);
+      r.code = f.code;
+      r.message = f.message;
+      r.details = f.details;
+    }
+  }
+  r.seconds_total = since(start);
+  if (r.code == kOk) {
+    console.info(input + " -> " + output + ": " + std::to_string(r.dimension) + "D, " + summary_of(r));
+  } else {
+    console.line("sweepcdt: " + r.message);
+    if (!options.quiet)
+      for (const auto& d : r.details) console.line("  " + d);
+  }
+  int code = r.code;
+  if (!options.stats_file.empty()) {
+    try {
+      write_stats(options.stats_file, RunSummary{"cdt", options, 1, r.seconds_total, code}, {r});
+    } catch (...) {
+      const Failure f = describe_current_exception(options.stats_file, true);
+      console.line("sweepcdt: " + f.message);
+      code = worst(code, f.code);
+    }
+  }
+  return code;
+}
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,78 @@
+#include "check_command.h"
+
+#include <filesystem>
+#include <ostream>
+
+#include "args.h"
+#include "errors.h"
+#include "exit_codes.h"
+#include "sweepcdt/io/to_plc.h"
+#include "sweepcdt/io/volume_mesh.h"
+#include "usage.h"
+#include "verify_mesh.h"
+
+namespace sweepcdt::cli {
+
+namespace fs = std::filesystem;
+
+int run_check(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
+  std::vector<std::string> files;
+  bool quiet = false;
+  try {
+    ArgReader args(words);
+    while (!args.done()) {
+      if (args.flag("--help") || args.flag("-h")) {
+        out << check_help();
+        return kOk;
+      }
+      if (args.flag("--quiet") || args.flag("-q")) quiet = true;
+      else if (args.at_option()) throw UsageError("unknown option '" + args.peek() + "'");
+      else files.push_back(args.take());
+    }
+    if (files.size() != 2) throw UsageError("check needs INPUT (the surface) and OUTPUT (the volume mesh)");
+  } catch (const UsageError& e) {
+    err << "sweepcdt: " << e.what() << "\n" << check_usage();
+    return kUsage;
+  }
+  const std::string& input = files[0];
+  const std::string& output = files[1];
+  Plc<3> plc;
+  io::VolumeMesh mesh;
+  for (const std::string* file : {&input, &output}) {
+    try {
+      if (file == &input) plc = io::import_plc(input);
+      else mesh = io::read_volume_mesh(output);
+    } catch (...) {
+      const Failure f = describe_current_exception(*file);
+      err << "sweepcdt: " << f.message << "\n";
+      if (!quiet)
+        for (const auto& d : f.details) err << "  " << d << "\n";
+      return f.code;
+    }
+  }
+
+  const MeshVerification v = verify_mesh(plc, mesh);
+  if (!quiet) {
+    out << input << ": " << plc.num_simplices() << " triangles, " << plc.num_points() << " vertices\n"
+        << output << ": " << mesh.num_tetrahedra() << " tetrahedra, " << mesh.num_points() << " vertices ("
+        << v.steiner_points << " Steiner points";
+    if (v.steiner_points) out << ", " << v.steiner_exactly_on << " exactly on their input triangle, the others its rounded midpoints";
+    out << ")\n";
+  }
+  if (!v.ok()) {
+    err << "sweepcdt: " << output << " is not the CDT of " << input << ": " << v.total_problems << " problem"
+        << (v.total_problems == 1 ? "" : "s") << "\n";
+    for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
+    if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
+    if (v.input_points_moved && fs::path(output).extension() == ".inp")
+      err << "  note: Abaqus .inp rounds coordinates that do not fit CalculiX's 20-character fields, so such a file\n"
+             "  cannot be exactly the CDT of its input; write .mesh, .vtu, .msh or .node to check exactly\n";
+    return kNotValid;
+  }
+  if (!quiet)
+    out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the input triangles, covering them;\n"
+        << "       validate(): topology, orientation, constraints, domain, every interior facet locally Delaunay\n";
+  return kOk;
+}
+
+}  // namespace sweepcdt::cli

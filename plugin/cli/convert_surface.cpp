@@ -1,0 +1,113 @@
+#include "convert_surface.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <cstdio>
+#include <set>
+
+#include "errors.h"
+#include "sweepcdt/io/to_plc.h"
+
+namespace sweepcdt::cli {
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void fail(FileResult& r, Failure f) {
+  r.code = f.code;
+  r.message = std::move(f.message);
+  r.details = std::move(f.details);
+}
+
+// The files write_volume_mesh() made for `target` (TetGen: three beside each other).
+void remove_mesh_files(const MeshTarget& target) {
+  std::error_code ec;
+  if (target.format != io::MeshFormat::TetGen) {
+    std::filesystem::remove(target.file, ec);
+    return;
+  }
+  std::filesystem::path base(target.file);
+  std::string ext = base.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".node" || ext == ".ele" || ext == ".face") base.replace_extension();
+  for (const char* part : {".node", ".ele", ".face"}) std::filesystem::remove(base.string() + part, ec);
+}
+
+}  // namespace
+
+FileResult convert_surface(const std::string& input, const std::vector<MeshTarget>& targets, const RunOptions& options,
+                           FileProgress& progress) {
+  FileResult r;
+  r.input = input;
+  for (const auto& t : targets) r.outputs.push_back({t.file, io::to_string(t.format)});
+  std::size_t written = 0;
+  const auto start = std::chrono::steady_clock::now();
+  bool writing = false;
+  try {
+    throw_if_interrupted();
+    progress.phase("reading");
+    const Plc<3> plc = io::import_plc(input);
+    r.seconds_read = since(start);
+    r.input_points = plc.num_points();
+    r.input_simplices = plc.num_simplices();
+
+    Options cdt_options;
+    cdt_options.algorithm = options.algorithm;
+    cdt_options.steiner = options.steiner;
+    cdt_options.statistics = &r.cdt;
+    cdt_options.progress = progress.callback();
+    Plc<3> triangulated;
+    const Triangulation<3> tri = cdt(plc, cdt_options, &triangulated);
+    r.computed = true;
+    r.simplices = tri.num_simplices();
+
+    if (options.check) {
+      progress.phase("validating");
+      const auto t = std::chrono::steady_clock::now();
+      const ValidationReport report = validate_triangulated(tri, triangulated);
+      r.seconds_validate = since(t);
+      if (!report.ok()) {
+        r.code = kNotValid;
+        r.message = input + ": --check: the computed triangulation is not a valid CDT (" + std::to_string(report.failures.size()) +
+                    " problems shown); nothing written";
+        for (const auto& f : report.failures) r.details.push_back(input + ": " + f.check + ": " + f.detail);
+        r.seconds_total = since(start);
+        return r;
+      }
+      r.validated = true;
+    }
+
+    const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
+    r.boundary_triangles = mesh.num_boundary();
+    r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
+
+    // Last chance to stop: once the writer runs, the file is completed (it is atomic either way).
+    throw_if_interrupted();
+    progress.phase("writing");
+    writing = true;
+    const auto t = std::chrono::steady_clock::now();
+    for (; written < targets.size(); ++written) io::write_volume_mesh(targets[written].file, mesh, targets[written].format);
+    r.seconds_write = since(t);
+  } catch (...) {
+    fail(r, describe_current_exception(input, writing));
+    for (std::size_t k = 0; k < written; ++k) remove_mesh_files(targets[k]);
+  }
+  r.seconds_total = since(start);
+  return r;
+}
+
+std::string summary_of(const FileResult& r) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, " (%s, %.2f s)", to_string(r.cdt.algorithm), r.seconds_total);
+  const char* what = r.dimension == 2 ? " triangles" : r.dimension == 3 ? " tetrahedra" : " simplices";
+  std::string s = std::to_string(r.simplices) + what;
+  if (r.dimension == 3) s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
+  if (r.validated) s += ", checked";
+  return s + buf;
+}
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,105 @@
+#include "progress.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <ostream>
+
+#include <unistd.h>
+
+namespace sweepcdt::cli {
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void on_sigint(int) {
+  g_interrupted = 1;
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+constexpr double kQuietSeconds = 1.0;    // work shorter than this shows no progress at all
+constexpr double kRedrawSeconds = 0.1;   // bar refresh
+constexpr int kBarWidth = 30;
+
+}  // namespace
+
+void install_interrupt_handler() { std::signal(SIGINT, on_sigint); }
+bool interrupted() { return g_interrupted != 0; }
+void throw_if_interrupted() {
+  if (interrupted()) throw CancelledError();
+}
+
+Console::Console(std::ostream& err, bool quiet) : err_(err), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0) {}
+
+void Console::clear_bar_locked() {
+  if (bar_shown_) err_ << "\r\033[K";
+  bar_shown_ = false;
+}
+
+void Console::line(const std::string& text) {
+  std::lock_guard lock(mutex_);
+  clear_bar_locked();
+  err_ << text << "\n" << std::flush;
+}
+
+void Console::info(const std::string& text) {
+  if (!quiet_) line(text);
+}
+
+void Console::bar(const std::string& text) {
+  if (quiet_ || !terminal_) return;
+  std::lock_guard lock(mutex_);
+  err_ << "\r\033[K" << text << std::flush;
+  bar_shown_ = true;
+}
+
+FileProgress::FileProgress(Console& console, std::string label, bool bar)
+    : console_(console), label_(std::move(label)), bar_(bar && console.terminal()) {}
+
+double FileProgress::elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+void FileProgress::phase(const std::string& name) { report(name, 0, 0); }
+
+std::function<bool(const Progress&)> FileProgress::callback() {
+  return [this](const Progress& p) {
+    report(p.phase, p.done, p.total);
+    return !interrupted();
+  };
+}
+
+void FileProgress::report(const std::string& phase, uint64_t done, uint64_t total) {
+  const double t = elapsed();
+  if (console_.quiet() || t < kQuietSeconds) {
+    phase_ = phase;
+    return;
+  }
+  if (bar_) {
+    if (t - last_draw_ < kRedrawSeconds && phase == phase_) return;
+    last_draw_ = t;
+    phase_ = phase;
+    char buf[64];
+    std::string text = label_ + ": " + phase + " ";
+    if (phase == "steiner points") {
+      // Between the sweeps of Steiner refinement, core reports the segments still to split, which
+      // shrink towards 0 — a count, not a fraction.
+      text += std::to_string(done) + " segments to split";
+    } else if (total > 0) {
+      const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
+      const int filled = static_cast<int>(f * kBarWidth);
+      text += '[';
+      text.append(filled, '#').append(kBarWidth - filled, '.') += ']';
+      std::snprintf(buf, sizeof buf, " %3.0f%%", 100 * f);
+      text += buf;
+    }
+    std::snprintf(buf, sizeof buf, "  %.1f s", t);
+    console_.bar(text + buf);
+  } else if (phase != phase_) {
+    // Log lines: one per phase change, so a log of a long batch shows where each file is.
+    phase_ = phase;
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " (%.1f s)", t);
+    console_.info(label_ + ": " + phase + buf);
+  }
+}
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,36 @@
+#include "run_options.h"
+
+namespace sweepcdt::cli {
+
+const char* to_string(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
+
+bool read_run_option(ArgReader& args, RunOptions& options) {
+  std::string v;
+  if (args.value("--algorithm", v)) {
+    if (v == "sweep-sphere") options.algorithm = Algorithm::SweepSphere;
+    else if (v == "sweep-plane") options.algorithm = Algorithm::SweepPlane;
+    else if (v == "giftwrap" || v == "gift-wrap") options.algorithm = Algorithm::GiftWrap;
+    else throw UsageError("--algorithm must be sweep-sphere, sweep-plane or giftwrap, not '" + v + "'");
+  } else if (args.value("--steiner", v)) {
+    if (v == "auto") options.steiner = SteinerMode::Auto;
+    else if (v == "none") options.steiner = SteinerMode::None;
+    else throw UsageError("--steiner must be auto or none, not '" + v + "'");
+  } else if (args.value("--facets", v)) {
+    // Triangles are what every reader produces and what cdt() constrains. Merging coplanar
+    // triangles into polygonal facets (fewer constraints, fewer Steiner points) needs support in
+    // core's Options that does not exist yet: refuse rather than silently ignore the request.
+    if (v == "coplanar") throw UsageError("--facets coplanar is not yet supported (only --facets triangles)");
+    if (v != "triangles") throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
+  } else if (args.flag("--check")) {
+    options.check = true;
+  } else if (args.value("--stats", v)) {
+    options.stats_file = v;
+  } else if (args.flag("--quiet") || args.flag("-q")) {
+    options.quiet = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,25 @@
+// Options shared by the commands that compute a CDT (`mesh`, `cdt`): how to compute it and what to
+// report. Parsed here once so both commands accept the same spellings.
+#pragma once
+#include <string>
+
+#include "args.h"
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::cli {
+
+struct RunOptions {
+  Algorithm algorithm = Algorithm::SweepSphere;
+  SteinerMode steiner = SteinerMode::Auto;
+  bool check = false;      // --check: validate the result again before writing it
+  std::string stats_file;  // --stats FILE.json
+  bool quiet = false;      // --quiet: errors only
+};
+
+const char* to_string(SteinerMode mode);  // "auto", "none"
+
+// Consumes one of the shared options at the reader's position; false if it is none of them.
+// `--facets coplanar` is recognised and refused (UsageError): core cannot merge coplanar facets yet.
+bool read_run_option(ArgReader& args, RunOptions& options);
+
+}  // namespace sweepcdt::cli

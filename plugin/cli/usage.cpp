@@ -1,0 +1,125 @@
+#include "usage.h"
+
+namespace sweepcdt::cli {
+
+std::string exit_codes_text() {
+  return "exit codes:\n"
+         "  0    success\n"
+         "  1    internal error or out of memory\n"
+         "  2    usage error (unknown option, missing argument, --facets coplanar: not yet supported)\n"
+         "  3    unreadable or invalid input (malformed file, open or self-intersecting surface, invalid PLC)\n"
+         "  4    no CDT exists for the input (with --steiner none; or Steiner points did not converge);\n"
+         "       the message names witness vertices (0-based ids of the input's welded vertices)\n"
+         "  5    an output could not be written (nothing is left under its name)\n"
+         "  6    not a valid CDT (`check`, or `--check` refusing to write)\n"
+         "  130  cancelled with Ctrl-C (nothing is written for the file in progress)\n"
+         "  batch runs exit with the worst code of their files: 130 > 1 > 2 > 5 > 3 > 4 > 6 > 0\n";
+}
+
+std::string mesh_usage() {
+  return "usage: sweepcdt INPUT -o OUTPUT [options]           (same as: sweepcdt mesh INPUT -o OUTPUT)\n"
+         "       sweepcdt mesh INPUT... --out-dir DIR [--format F[,F...]] [--threads N] [options]\n";
+}
+
+std::string mesh_help() {
+  return mesh_usage() +
+         "\nTetrahedralize the interior of closed triangle surfaces (OFF, STL, OBJ, PLY, glTF/GLB, Draco .drc)\n"
+         "into volume meshes: the constrained Delaunay tetrahedralization with the input triangles as faces.\n"
+         "\n"
+         "output:\n"
+         "  -o, --output FILE   one input: the output file; its extension gives the format. Repeat it\n"
+         "                      for several formats from one computation (-o a.mesh -o a.vtu)\n"
+         "  --out-dir DIR       any number of inputs: DIR/<input stem>.<ext> each (DIR is created)\n"
+         "  --format F[,F...]   mesh (Medit), vtu (VTK XML), msh (Gmsh 4.1), msh22 (Gmsh 2.2),\n"
+         "                      tetgen (.node/.ele/.face), inp (Abaqus/CalculiX, coordinates rounded\n"
+         "                      to CalculiX's 20-character fields); default from -o's extension, mesh\n"
+         "                      with --out-dir; a list (--format mesh,vtu) only with --out-dir\n"
+         "  --threads N         convert N files at a time (output identical to one thread)\n"
+         "computation:\n"
+         "  --algorithm A       sweep-sphere (default), sweep-plane, giftwrap (slow reference)\n"
+         "  --steiner auto|none auto (default): add Steiner points on the surface where it has no CDT as\n"
+         "                      given; none: the surface exactly, or exit 4 naming the obstruction\n"
+         "  --facets triangles  constrain every input triangle (the default and, for now, only mode;\n"
+         "                      `coplanar` is not yet supported and exits 2)\n"
+         "  --check             validate the result exactly once more before writing; refuse (exit 6) if not valid\n"
+         "reporting:\n"
+         "  --stats FILE.json   counts, Steiner points, per-phase times, peak memory (written atomically)\n"
+         "  -q, --quiet         only errors\n"
+         "\n"
+         "Progress: a bar on stderr when it is a terminal and a file takes over a second, log lines\n"
+         "otherwise. Ctrl-C cancels cleanly (exit 130, no partial output). Outputs are written to a\n"
+         "temporary file and renamed, so a failure never leaves a partial mesh under the output's name;\n"
+         "an input that fails leaves none of its outputs. Messages go to stderr.\n"
+         "\n" +
+         exit_codes_text();
+}
+
+std::string check_usage() { return "usage: sweepcdt check INPUT OUTPUT [--quiet]\n"; }
+
+std::string check_help() {
+  return check_usage() +
+         "\nVerify that the volume mesh OUTPUT (any format `mesh` writes) is the constrained Delaunay\n"
+         "tetrahedralization of the closed surface INPUT, exactly:\n"
+         "  - OUTPUT's first vertices are INPUT's welded vertices, bit for bit, in order;\n"
+         "  - every further vertex (a Steiner point) is reproduced bit for bit as the midpoint\n"
+         "    a + (b - a)/2 of two points on one input triangle (vertices or earlier Steiner points),\n"
+         "    the construction `--steiner auto` uses; so it lies on that triangle up to the rounding\n"
+         "    of that arithmetic (exactly, when it is exactly coplanar; the report counts which);\n"
+         "  - the boundary of the tetrahedra, split at the Steiner points, is made of pieces of the\n"
+         "    input triangles, each with the input's inside on the same side, as many per input\n"
+         "    triangle as a triangulation of it with those points has;\n"
+         "  - validate(): tetrahedra positively oriented and properly connected, the domain covered\n"
+         "    exactly (volumes), every constraint present, every interior facet locally Delaunay.\n"
+         "Exit 0: valid; 6: not valid (the first problems are printed); 3: INPUT or OUTPUT unreadable.\n"
+         "\n" +
+         exit_codes_text();
+}
+
+std::string cdt_usage() {
+  return "usage: sweepcdt cdt FILE -o OUTPUT [--format F] [--algorithm A] [--steiner none|auto] [--check]\n"
+         "                   [--stats FILE.json] [--quiet]\n";
+}
+
+std::string cdt_help() {
+  return cdt_usage() +
+         "\nThe CDT of a piecewise linear complex in any dimension 2..5: Triangle .poly (2D), TetGen .poly or\n"
+         ".smesh (3D), sweepcdt .plc (any dimension; see io/README.md).\n"
+         "  -o, --output FILE   .node (Triangle .node/.ele in 2D, TetGen .node/.ele/.face in 3D),\n"
+         "                      .simplices (any dimension), or in 3D any volume format of `mesh`\n"
+         "  --format F          node, simplices, or (3D) mesh, vtu, msh, msh22, tetgen, inp\n"
+         "  --steiner none|auto none (default): the PLC exactly; auto: Steiner points (3D only)\n"
+         "  --algorithm, --check, --stats, --quiet   as for `mesh`\n"
+         "\n" +
+         exit_codes_text();
+}
+
+std::string info_usage() { return "usage: sweepcdt info INPUT [--json]\n"; }
+
+std::string info_help() {
+  return info_usage() +
+         "\nWhat the importer sees in a surface file (OFF, STL, OBJ, PLY, glTF/GLB, Draco): counts, welding,\n"
+         "closed, manifold, orientation, shells and nesting, self-intersections.\n"
+         "exit codes: 0 valid closed surface, 2 usage error, 3 unreadable or invalid input\n";
+}
+
+std::string general_usage() {
+  return mesh_usage() +
+         "       sweepcdt check INPUT OUTPUT\n"
+         "       sweepcdt cdt FILE -o OUTPUT\n"
+         "       sweepcdt info INPUT [--json]\n"
+         "       sweepcdt help [COMMAND] | --help | --version\n";
+}
+
+std::string general_help() {
+  return "sweepcdt " SWEEPCDT_VERSION " - exact constrained Delaunay tetrahedralization of closed surfaces\n\n" + general_usage() +
+         "\ncommands:\n"
+         "  mesh    closed surfaces -> volume meshes (.mesh .vtu .msh .node .inp); the default command\n"
+         "  check   verify that a volume mesh is the CDT of a surface\n"
+         "  cdt     CDT of a PLC file in any dimension (.poly, .smesh, .plc)\n"
+         "  info    what the importer sees in a surface file\n"
+         "`sweepcdt help COMMAND` or `sweepcdt COMMAND --help` describes each command's options.\n"
+         "\n" +
+         exit_codes_text();
+}
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,224 @@
+// How a volume mesh is checked against its surface, exactly, without trusting anything the mesh
+// file says beyond its points and tetrahedra:
+//
+// 1. The input's welded points come first in the mesh, bit for bit (the writers promise this).
+// 2. Steiner points. `--steiner auto` puts them at a + (b - a)/2 in double arithmetic, a and b on
+//    one input triangle (its vertices or earlier Steiner points), so they lie on the triangle only
+//    up to rounding — an exact "point on triangle" test would reject correct meshes, and any
+//    tolerance would be a guess. Instead each Steiner point (in order) must be reproduced bit for
+//    bit by that construction from two points already known to lie on the same input triangle.
+//    Points exactly coplanar with their triangle are counted separately.
+// 3. The refined surface: the boundary facets of the tetrahedra (facets of one tetrahedron). Each
+//    must have all three vertices on one input triangle (2.), with the tetrahedron on the side that
+//    the input's exterior notation says is inside, and every input triangle must be covered by as
+//    many such facets as a triangulation of it with its points has (b + 2i - 2: b points on its
+//    edges, i inside). Without Steiner points the input PLC itself is used instead: exact.
+// 4. validate() of the tetrahedra against that PLC: topology, orientation, every constraint a
+//    facet, the domain covered (exact volume sums), every interior facet locally Delaunay.
+#include "verify_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <map>
+
+#include "sweepcdt/predicates.h"
+#include "sweepcdt/validate.h"
+
+namespace sweepcdt::cli {
+namespace {
+
+constexpr std::size_t kProblemsShown = 10;
+
+class Problems {
+ public:
+  explicit Problems(MeshVerification& v) : v_(v) {}
+  void add(const std::string& text) {
+    if (v_.problems.size() < kProblemsShown) v_.problems.push_back(text);
+    ++v_.total_problems;
+  }
+
+ private:
+  MeshVerification& v_;
+};
+
+std::string point_text(const double* p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p[0], p[1], p[2]);
+  return buf;
+}
+
+std::string ids_text(const uint32_t* ids, int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) {
+    if (i) s += ' ';
+    s += std::to_string(ids[i]);
+  }
+  return s;
+}
+
+bool same_point(const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
+// The construction of segment_recovery.cpp, operation for operation.
+bool is_midpoint(const double* s, const double* a, const double* b) {
+  for (int k = 0; k < 3; ++k)
+    if (s[k] != a[k] + (b[k] - a[k]) / 2) return false;
+  return true;
+}
+
+struct OnTriangle {
+  uint32_t point;
+  uint8_t edges;  // bit e: on edge e = (v_e, v_{e+1}) of the triangle; 0: inside
+};
+
+using Facet = std::array<uint32_t, 3>;
+
+}  // namespace
+
+MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
+  MeshVerification v;
+  Problems problems(v);
+  const std::size_t n = input.num_points(), total = mesh.num_points(), m = input.num_simplices();
+
+  // 1. Input points.
+  v.steiner_points = total > n ? total - n : 0;
+  if (total < n) {
+    problems.add("the mesh has " + std::to_string(total) + " vertices, fewer than the input's " + std::to_string(n));
+    return v;
+  }
+  for (uint32_t i = 0; i < n; ++i)
+    if (!same_point(mesh.points.data() + 3 * std::size_t{i}, input.point(i))) {
+      v.input_points_moved = true;
+      problems.add("vertex " + std::to_string(i) + " is " + point_text(mesh.points.data() + 3 * std::size_t{i}) + " in the mesh but " +
+                   point_text(input.point(i)) + " in the input");
+    }
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    if (mesh.tetrahedra[t] >= total) {
+      problems.add("tetrahedron " + std::to_string(t / 4) + " names vertex " + std::to_string(mesh.tetrahedra[t]) + ", which does not exist");
+      break;
+    }
+  if (!v.ok()) return v;
+
+  // 2. Steiner points, in the order they were made.
+  std::vector<std::vector<OnTriangle>> on(m);  // per input triangle: the points known to lie on it
+  std::vector<std::vector<uint32_t>> triangles_of(total);  // per point: the input triangles it lies on
+  for (uint32_t j = 0; j < m; ++j)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t p = input.simplex(j)[k];
+      on[j].push_back({p, static_cast<uint8_t>((1u << k) | (1u << ((k + 2) % 3)))});
+      triangles_of[p].push_back(j);
+    }
+  std::vector<std::array<double, 6>> box(m);  // closed bounding boxes: a midpoint stays in its triangle's
+  for (uint32_t j = 0; j < m; ++j)
+    for (int c = 0; c < 3; ++c) {
+      const double a = input.point(input.simplex(j)[0])[c], b = input.point(input.simplex(j)[1])[c], d = input.point(input.simplex(j)[2])[c];
+      box[j][c] = std::min({a, b, d});
+      box[j][3 + c] = std::max({a, b, d});
+    }
+  for (uint32_t s = static_cast<uint32_t>(n); s < total; ++s) {
+    const double* ps = mesh.points.data() + 3 * std::size_t{s};
+    for (uint32_t j = 0; j < m; ++j) {
+      if (ps[0] < box[j][0] || ps[1] < box[j][1] || ps[2] < box[j][2] || ps[0] > box[j][3] || ps[1] > box[j][4] || ps[2] > box[j][5]) continue;
+      const auto& known = on[j];
+      bool found = false;
+      uint8_t edges = 0;
+      for (std::size_t a = 0; a < known.size() && !found; ++a)
+        for (std::size_t b = 0; b < known.size() && !found; ++b)
+          if (a != b && is_midpoint(ps, mesh.points.data() + 3 * std::size_t{known[a].point}, mesh.points.data() + 3 * std::size_t{known[b].point})) {
+            found = true;
+            edges = known[a].edges & known[b].edges;
+          }
+      if (!found) continue;
+      on[j].push_back({s, edges});
+      triangles_of[s].push_back(j);
+    }
+    if (triangles_of[s].empty()) {
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the midpoint of two points on one input triangle");
+      continue;
+    }
+    const uint32_t* t = input.simplex(triangles_of[s].front());
+    if (predicates::orient<3>({input.point(t[0]), input.point(t[1]), input.point(t[2]), ps}) == predicates::Sign::Zero) ++v.steiner_exactly_on;
+  }
+  if (!v.ok()) return v;
+
+  // 3. The boundary of the tetrahedra, each facet with the tetrahedron on its positive side.
+  std::map<Facet, std::pair<int, Facet>> facets;  // sorted ids -> (count, oriented facet)
+  std::map<Facet, uint32_t> apex;                 // sorted ids -> the tetrahedron's other vertex
+  for (std::size_t t = 0; t < mesh.num_tetrahedra(); ++t) {
+    const uint32_t* q = mesh.tetrahedra.data() + 4 * t;
+    for (int i = 0; i < 4; ++i) {
+      Facet f{q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]};
+      const auto sign = predicates::orient<3>({mesh.points.data() + 3 * std::size_t{f[0]}, mesh.points.data() + 3 * std::size_t{f[1]},
+                                               mesh.points.data() + 3 * std::size_t{f[2]}, mesh.points.data() + 3 * std::size_t{q[i]}});
+      if (sign == predicates::Sign::Negative) std::swap(f[1], f[2]);
+      Facet key = f;
+      std::sort(key.begin(), key.end());
+      auto& entry = facets[key];
+      if (entry.first++ == 0) entry.second = f;
+      apex[key] = q[i];
+    }
+  }
+  Plc<3> refined;
+  refined.points = mesh.points;
+  std::vector<std::size_t> pieces(m, 0);
+  for (const auto& [key, entry] : facets) {
+    if (entry.first != 1) continue;  // interior (2) or over-shared (validate() reports it)
+    ++v.boundary_triangles;
+    const Facet& f = entry.second;
+    // The input triangles all three vertices lie on.
+    std::vector<uint32_t> common = triangles_of[f[0]];
+    for (int k = 1; k < 3; ++k) {
+      std::vector<uint32_t> next;
+      std::set_intersection(common.begin(), common.end(), triangles_of[f[k]].begin(), triangles_of[f[k]].end(), std::back_inserter(next));
+      common.swap(next);
+    }
+    if (common.empty()) {
+      problems.add("boundary triangle (" + ids_text(f.data(), 3) + ") does not lie on an input triangle");
+      continue;
+    }
+    const uint32_t j = common.front();
+    const uint32_t* t = input.simplex(j);
+    const auto side = predicates::orient<3>({input.point(t[0]), input.point(t[1]), input.point(t[2]), mesh.points.data() + 3 * std::size_t{apex.at(key)}});
+    const auto inside = input.exterior_of(j) == ExteriorSide::Negative ? predicates::Sign::Positive : predicates::Sign::Negative;
+    if (side != inside)
+      problems.add("boundary triangle (" + ids_text(f.data(), 3) + ") on input triangle " + std::to_string(j) +
+                   " has its tetrahedron on the outside of the surface");
+    ++pieces[j];
+    refined.simplices.insert(refined.simplices.end(), f.begin(), f.end());
+    refined.exterior.push_back(ExteriorSide::Negative);
+    refined.tags.push_back(j);
+  }
+  for (uint32_t j = 0; j < m; ++j) {
+    std::size_t b = 0, i = 0;
+    for (const auto& p : on[j]) (p.edges ? b : i) += 1;
+    const std::size_t expected = b + 2 * i - 2;
+    if (pieces[j] != expected)
+      problems.add("input triangle " + std::to_string(j) + " (" + ids_text(input.simplex(j), 3) + ") is covered by " + std::to_string(pieces[j]) +
+                   " boundary triangles; a triangulation of it with its " + std::to_string(b + i) + " points has " + std::to_string(expected));
+  }
+  if (!v.ok()) return v;
+
+  // 4. validate(): against the input itself when nothing was added.
+  Triangulation<3> tri;
+  tri.points = mesh.points;
+  tri.num_input_points = static_cast<uint32_t>(total);
+  tri.simplices = mesh.tetrahedra;
+  if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions = mesh.regions;
+  compute_neighbors(tri);
+  const bool exact_input = v.steiner_points == 0;
+  if (!exact_input) {
+    // Pieces of different triangles must not cross (find_problems is exact).
+    for (const auto& p : find_problems(refined, kProblemsShown)) problems.add("refined surface: " + p.message);
+    if (!v.ok()) return v;
+  }
+  const ValidationReport report = validate(tri, exact_input ? input : refined);
+  v.validated = true;
+  for (const auto& f : report.failures) problems.add(f.check + ": " + f.detail);
+  // failures holds the first few of each check; counts has them all.
+  std::size_t all = 0;
+  for (const auto& [check, count] : report.counts) all += count;
+  if (all > report.failures.size()) v.total_problems += all - report.failures.size();
+  return v;
+}
+
+}  // namespace sweepcdt::cli

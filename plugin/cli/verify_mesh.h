@@ -1,0 +1,29 @@
+// Is a volume mesh the CDT of a closed surface? The work behind `sweepcdt check` (check_command.cpp
+// prints it). What is checked, and why the Steiner points need care, is in verify_mesh.cpp.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sweepcdt/io/volume_mesh.h"
+#include "sweepcdt/plc.h"
+
+namespace sweepcdt::cli {
+
+struct MeshVerification {
+  std::vector<std::string> problems;  // the first ones, one line each
+  std::size_t total_problems = 0;
+  // What was found (for the report):
+  bool input_points_moved = false;      // some input vertex differs in the mesh
+  std::size_t steiner_points = 0;
+  std::size_t steiner_exactly_on = 0;   // Steiner points exactly on their input triangle
+  std::size_t boundary_triangles = 0;   // boundary facets of the tetrahedra
+  bool validated = false;               // validate() ran (all earlier checks passed)
+  bool ok() const { return total_problems == 0; }
+};
+
+// `input`: io::import_plc(INPUT); `mesh`: io::read_volume_mesh(OUTPUT). Exact; never throws for a
+// wrong mesh (that is a problem in the result).
+MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh);
+
+}  // namespace sweepcdt::cli

@@ -1,0 +1,144 @@
+// `sweepcdt check INPUT OUTPUT`: accepts what `sweepcdt` wrote, rejects (exit 6) meshes that are
+// not the CDT — a tetrahedron removed, a vertex moved, a Steiner point moved by one ulp, a flip that
+// keeps a valid tetrahedralization but breaks the Delaunay property — and says why.
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "cli_run.h"
+#include "sweepcdt/io/volume_mesh.h"
+#include "sweepcdt/predicates.h"
+#include "test_shapes.h"
+
+namespace sweepcdt::cli::testing {
+namespace {
+
+using predicates::Sign;
+
+// Meshes `input` into dir/name with the CLI and reads the result back.
+io::VolumeMesh make_mesh(const fs::path& input, const fs::path& output, const TempDir& dir) {
+  const CliRun r = run(quoted(input) + " -o " + quoted(output), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  return io::read_volume_mesh(output);
+}
+
+CliRun check(const fs::path& input, const fs::path& output, const TempDir& dir) {
+  return run("check " + quoted(input) + " " + quoted(output), dir);
+}
+
+Sign orient(const io::VolumeMesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  const auto p = [&](uint32_t i) { return m.points.data() + 3 * std::size_t{i}; };
+  return predicates::orient<3>({p(a), p(b), p(c), p(d)});
+}
+
+// Replaces two tetrahedra abcd, abce whose union is convex by the three around edge de (a 2-3 flip):
+// still a valid tetrahedralization of the same domain, but no longer the (unique, perturbed) CDT.
+bool flip_one_pair(io::VolumeMesh& m) {
+  std::map<std::array<uint32_t, 3>, std::pair<std::size_t, uint32_t>> seen;  // facet -> (tet, apex)
+  for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) {
+    const uint32_t* q = m.tetrahedra.data() + 4 * t;
+    for (int i = 0; i < 4; ++i) {
+      std::array<uint32_t, 3> f{q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]};
+      std::sort(f.begin(), f.end());
+      const auto [it, fresh] = seen.emplace(f, std::make_pair(t, q[i]));
+      if (fresh) continue;
+      const uint32_t d = it->second.second, e = q[i];
+      const auto [a, b, c] = f;
+      const Sign s1 = orient(m, a, b, d, e), s2 = orient(m, b, c, d, e), s3 = orient(m, c, a, d, e);
+      if (s1 == Sign::Zero || s1 != s2 || s2 != s3) continue;  // de does not cross abc's interior
+      std::vector<uint32_t> tets;
+      for (std::size_t u = 0; u < m.num_tetrahedra(); ++u)
+        if (u != t && u != it->second.first) tets.insert(tets.end(), m.tetrahedra.begin() + 4 * u, m.tetrahedra.begin() + 4 * u + 4);
+      for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+        std::array<uint32_t, 4> n{x, y, d, e};
+        if (orient(m, x, y, d, e) == Sign::Negative) std::swap(n[0], n[1]);
+        tets.insert(tets.end(), n.begin(), n.end());
+      }
+      const int32_t region = m.regions.empty() ? 0 : m.regions[t];
+      m.tetrahedra = tets;
+      if (!m.regions.empty()) m.regions.assign(m.num_tetrahedra(), region);
+      return true;
+    }
+  }
+  return false;
+}
+
+TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto input = shared_data() / "glb/moon.glb";
+  const auto good = dir.path() / "moon.mesh";
+  const io::VolumeMesh mesh = make_mesh(input, good, dir);
+  const CliRun ok = check(input, good, dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_TRUE(ok.says("moon.mesh: " + std::to_string(mesh.num_tetrahedra()) + " tetrahedra, 2502 vertices (0 Steiner points)")) << ok.out;
+  EXPECT_TRUE(ok.says("every interior facet locally Delaunay")) << ok.out;
+
+  const auto tampered = dir.path() / "tampered.mesh";
+  {
+    io::VolumeMesh m = mesh;
+    m.tetrahedra.resize(m.tetrahedra.size() - 4);
+    if (!m.regions.empty()) m.regions.pop_back();
+    io::write_volume_mesh(tampered, m, io::MeshFormat::Medit);
+    const CliRun r = check(input, tampered, dir);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("tampered.mesh is not the CDT of " + input.string())) << r.out;
+  }
+  {
+    io::VolumeMesh m = mesh;
+    m.points[3 * 7 + 1] += 1e-3;
+    io::write_volume_mesh(tampered, m, io::MeshFormat::Medit);
+    const CliRun r = check(input, tampered, dir);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("vertex 7 is (")) << r.out;
+  }
+  {
+    io::VolumeMesh m = mesh;
+    ASSERT_TRUE(flip_one_pair(m));
+    io::write_volume_mesh(tampered, m, io::MeshFormat::Medit);
+    const CliRun r = check(input, tampered, dir);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("locally-delaunay")) << r.out;
+  }
+  // Another surface's mesh.
+  const CliRun other = check(shared_data() / "off/icosahedron.off", good, dir);
+  EXPECT_EQ(other.exit_code, 6) << other.out;
+  // Unreadable mesh: exit 3.
+  const auto junk = dir.write("junk.mesh", "not a mesh\n");
+  const CliRun unreadable = check(input, junk, dir);
+  EXPECT_EQ(unreadable.exit_code, 3) << unreadable.out;
+  EXPECT_TRUE(unreadable.says(junk.string())) << unreadable.out;
+}
+
+// With Steiner points, each must be reproduced bit for bit as a midpoint on its input triangle.
+TEST(CliCheck, SteinerPointsMustBeTheMidpointsCdtMakes) {
+  TempDir dir;
+  const Plc<3> prism = fixtures::twisted_prism(0.5);
+  std::string off = "OFF\n6 8 0\n";
+  char buf[128];
+  for (uint32_t i = 0; i < 6; ++i) {
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", prism.point(i)[0], prism.point(i)[1], prism.point(i)[2]);
+    off += buf;
+  }
+  for (std::size_t j = 0; j < 8; ++j)
+    off += "3 " + std::to_string(prism.simplex(j)[0]) + " " + std::to_string(prism.simplex(j)[1]) + " " + std::to_string(prism.simplex(j)[2]) + "\n";
+  const auto input = dir.write("prism.off", off);
+  const auto good = dir.path() / "prism.vtu";
+  const io::VolumeMesh mesh = make_mesh(input, good, dir);
+  ASSERT_GT(mesh.num_points(), 6u);
+  const CliRun ok = check(input, good, dir);
+  ASSERT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_TRUE(ok.says("(" + std::to_string(mesh.num_points() - 6) + " Steiner points, ")) << ok.out;
+
+  io::VolumeMesh m = mesh;
+  m.points[3 * 6] = std::nextafter(m.points[3 * 6], 10.0);  // the first Steiner point, one ulp off
+  const auto tampered = dir.path() / "tampered.vtu";
+  io::write_volume_mesh(tampered, m, io::MeshFormat::Vtu);
+  const CliRun r = check(input, tampered, dir);
+  EXPECT_EQ(r.exit_code, 6) << r.out;
+  EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
+  EXPECT_TRUE(r.says("is not the midpoint of two points on one input triangle")) << r.out;
+}
+
+}  // namespace
+}  // namespace sweepcdt::cli::testing

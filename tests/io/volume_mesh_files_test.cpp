@@ -1,0 +1,215 @@
+// Volume-mesh files without a CDT: atomic writes (nothing half-written, nothing left behind), format
+// names, and the readers' answers to malformed and hostile files (InputError with file and line).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "io_test_util.h"
+#include "sweepcdt/io/volume_mesh.h"
+
+namespace sweepcdt::io {
+namespace {
+
+using testing::TempDir;
+
+// One positive tetrahedron (sweepcdt's orientation) with its four outward faces.
+VolumeMesh unit_tetrahedron() {
+  VolumeMesh m;
+  m.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  m.num_input_points = 4;
+  m.tetrahedra = {0, 1, 3, 2};  // orient(0, 1, 3, 2) > 0: 2 lies below (0, 1, 3) seen counterclockwise
+  m.regions = {0};
+  m.boundary = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  m.boundary_tags = {0, 1, 2, 3};
+  return m;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> listing(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+const MeshFormat kAll[] = {MeshFormat::Medit, MeshFormat::Vtu, MeshFormat::Gmsh41, MeshFormat::Gmsh22, MeshFormat::TetGen, MeshFormat::Abaqus};
+
+TEST(VolumeMeshFormats, NamesAndExtensions) {
+  for (MeshFormat f : kAll) EXPECT_EQ(mesh_format_named(to_string(f)), f);
+  EXPECT_EQ(mesh_format_named("msh41"), MeshFormat::Gmsh41);
+  EXPECT_EQ(mesh_format_named("node"), MeshFormat::TetGen);
+  EXPECT_EQ(mesh_format_named("ele"), MeshFormat::TetGen);
+  EXPECT_EQ(mesh_format_named("stl"), std::nullopt);
+  EXPECT_EQ(mesh_format_of("a/b.MESH"), MeshFormat::Medit);
+  EXPECT_EQ(mesh_format_of("b.vtu"), MeshFormat::Vtu);
+  EXPECT_EQ(mesh_format_of("b.msh"), MeshFormat::Gmsh41);
+  EXPECT_EQ(mesh_format_of("b.ele"), MeshFormat::TetGen);
+  EXPECT_EQ(mesh_format_of("b.face"), MeshFormat::TetGen);
+  EXPECT_EQ(mesh_format_of("b.inp"), MeshFormat::Abaqus);
+  EXPECT_EQ(mesh_format_of("b.off"), std::nullopt);
+  EXPECT_EQ(mesh_format_of("b"), std::nullopt);
+}
+
+TEST(VolumeMeshWrite, TetgenWritesThreeFilesFromAnyOfTheirNames) {
+  TempDir dir;
+  for (const char* name : {"a.node", "b.ele", "c.face", "d"}) {
+    write_volume_mesh(dir.path() / name, unit_tetrahedron(), MeshFormat::TetGen);
+    const std::string stem = std::filesystem::path(name).stem().string();
+    for (const char* ext : {".node", ".ele", ".face"}) EXPECT_TRUE(std::filesystem::exists(dir.path() / (stem + ext))) << stem << ext;
+    const VolumeMesh back = read_volume_mesh(dir.path() / stem);  // the stem alone names the set
+    EXPECT_EQ(back.tetrahedra, unit_tetrahedron().tetrahedra);
+    EXPECT_EQ(back.boundary_tags, unit_tetrahedron().boundary_tags);
+  }
+  EXPECT_EQ(listing(dir.path()).size(), 12u) << "temporaries left behind";
+}
+
+TEST(VolumeMeshWrite, MissingFolderThrowsAndLeavesNothing) {
+  TempDir dir;
+  for (MeshFormat f : kAll) {
+    try {
+      write_volume_mesh(dir.path() / "no" / "such" / "out.x", unit_tetrahedron(), f);
+      ADD_FAILURE() << to_string(f) << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.kind(), InputErrorKind::Unreadable);
+      EXPECT_NE(std::string(e.what()).find("out.x"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(listing(dir.path()).empty());
+}
+
+// A folder under the target name: nothing is renamed (for TetGen: not even the .node and .ele beside
+// the blocked .face), the files that were there are untouched, no temporary is left.
+TEST(VolumeMeshWrite, FailureLeavesExistingFilesUntouched) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.path() / "m.face");
+  const auto old_node = dir.write("m.node", "old node\n");
+  try {
+    write_volume_mesh(dir.path() / "m.node", unit_tetrahedron(), MeshFormat::TetGen);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.kind(), InputErrorKind::Unreadable);
+    EXPECT_NE(std::string(e.what()).find("m.face"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(old_node), "old node\n");
+  EXPECT_EQ(listing(dir.path()), (std::vector<std::string>{"m.face", "m.node"}));
+
+  std::filesystem::create_directory(dir.path() / "v.vtu");
+  EXPECT_THROW(write_volume_mesh(dir.path() / "v.vtu", unit_tetrahedron(), MeshFormat::Vtu), InputError);
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path() / "v.vtu"));
+
+  // An inconsistent mesh is refused before anything is written.
+  const auto old_mesh = dir.write("x.mesh", "old mesh\n");
+  VolumeMesh broken = unit_tetrahedron();
+  broken.tetrahedra[2] = 9;
+  EXPECT_THROW(write_volume_mesh(old_mesh, broken, MeshFormat::Medit), InputError);
+  EXPECT_EQ(slurp(old_mesh), "old mesh\n");
+  EXPECT_EQ(listing(dir.path()).size(), 4u);
+}
+
+TEST(VolumeMeshWrite, ReplacesAnExistingFileWhole) {
+  TempDir dir;
+  const auto file = dir.write("r.mesh", std::string(100000, 'x'));
+  write_volume_mesh(file, unit_tetrahedron(), MeshFormat::Medit);
+  const std::string text = slurp(file);
+  EXPECT_EQ(text.rfind("MeshVersionFormatted 2\n", 0), 0u);
+  EXPECT_EQ(text.find('x'), std::string::npos);
+  EXPECT_EQ(read_volume_mesh(file).points, unit_tetrahedron().points);
+}
+
+TEST(VolumeMeshWrite, UntaggedBoundaryAndEmptyMeshRoundTrip) {
+  TempDir dir;
+  VolumeMesh m = unit_tetrahedron();
+  m.boundary_tags = {kNone, 7, kNone, 0};
+  m.regions = {41};
+  for (MeshFormat f : kAll) {
+    SCOPED_TRACE(to_string(f));
+    auto name = [&](const std::string& stem) {
+      return dir.path() / (stem + "." + (f == MeshFormat::Gmsh22 ? "msh" : f == MeshFormat::TetGen ? "node" : to_string(f)));
+    };
+    const auto file = name("u");
+    write_volume_mesh(file, m, f);
+    const VolumeMesh back = read_volume_mesh(file);
+    EXPECT_EQ(back.regions, m.regions);
+    if (f != MeshFormat::Abaqus) EXPECT_EQ(back.boundary_tags, m.boundary_tags);
+    const auto empty_file = name("e");
+    write_volume_mesh(empty_file, VolumeMesh{}, f);
+    const VolumeMesh empty = read_volume_mesh(empty_file);
+    EXPECT_EQ(empty.num_points() + empty.num_tetrahedra() + empty.num_boundary(), 0u);
+  }
+}
+
+// Reads `text` as `name`: an InputError of `kind` whose message names the file and says `where`.
+void expect_error(const TempDir& dir, const std::string& name, const std::string& text, InputErrorKind kind, const std::string& where) {
+  const auto file = dir.write(name, text);
+  try {
+    read_volume_mesh(file);
+    ADD_FAILURE() << name << " was accepted:\n" << text;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << "expected '" << where << "' in: " << e.what();
+  }
+}
+
+TEST(VolumeMeshRead, MalformedMedit) {
+  TempDir dir;
+  const std::string head = "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n";
+  expect_error(dir, "a.mesh", head + "Tetrahedra\n1\n1 2 3 5 1\nEnd\n", InputErrorKind::IndexOutOfRange, ":11:");
+  expect_error(dir, "b.mesh", head + "Tetrahedra\n99999999999\n1 2 3 4 1\n", InputErrorKind::AbsurdCount, ":10:");
+  expect_error(dir, "c.mesh", head + "Tetrahedra\n2\n1 2 3 4 1\n1 2 3 4            \n", InputErrorKind::Truncated, ":13:");  // the end of the file
+  expect_error(dir, "d.mesh", "MeshVersionFormatted 2\nDimension 2\n", InputErrorKind::Unsupported, ":2:");
+  expect_error(dir, "e.mesh", head + "Hexahedra\n0\n", InputErrorKind::Unsupported, ":9:");
+  expect_error(dir, "f.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 nan 0 0\n", InputErrorKind::NonFinite, ":5:");
+}
+
+TEST(VolumeMeshRead, MalformedGmsh) {
+  TempDir dir;
+  expect_error(dir, "a.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", InputErrorKind::Unsupported, ":2:");
+  expect_error(dir, "b.msh", "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n", InputErrorKind::Unsupported, ":2:");
+  expect_error(dir, "c.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n1 4 2 1 1 1 1 1 2\n$EndElements\n",
+               InputErrorKind::IndexOutOfRange, ":10:");
+  expect_error(dir, "d.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n1 5 2 1 1 1 1 1 1 1 1 1 1\n$EndElements\n",
+               InputErrorKind::Unsupported, ":10:");
+  expect_error(dir, "e.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4000000000 1 4000000000\n", InputErrorKind::AbsurdCount, ":5:");
+  expect_error(dir, "f.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\n900000000 0 0 0\n$EndNodes\n", InputErrorKind::Unsupported, "sparse");
+  expect_error(dir, "g.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n", InputErrorKind::Truncated, "$EndPhysicalNames");
+}
+
+TEST(VolumeMeshRead, MalformedVtu) {
+  TempDir dir;
+  const std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n";
+  expect_error(dir, "a.vtu", head + "<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n<DataArray type=\"Float64\" format=\"binary\">AAAA</DataArray>\n</Points><Cells></Cells></Piece>",
+               InputErrorKind::Unsupported, ":6:");
+  expect_error(dir, "b.vtu", head + "<Piece NumberOfPoints=\"99999999\" NumberOfCells=\"0\">\n<Points>\n<DataArray type=\"Float64\" format=\"ascii\">0 0 0</DataArray>\n</Points><Cells></Cells></Piece>",
+               InputErrorKind::AbsurdCount, ":6:");
+  expect_error(dir, "c.vtu",
+               head + "<Piece NumberOfPoints=\"1\" NumberOfCells=\"1\">\n<Points>\n<DataArray type=\"Float64\" format=\"ascii\">0 0 0</DataArray>\n</Points>\n<Cells>\n"
+                      "<DataArray Name=\"connectivity\" format=\"ascii\">0 0 0 7</DataArray>\n<DataArray Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+                      "<DataArray Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells></Piece>",
+               InputErrorKind::IndexOutOfRange, ":9:");
+}
+
+TEST(VolumeMeshRead, MalformedTetgenAndAbaqus) {
+  TempDir dir;
+  dir.write("t.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
+  dir.write("t.ele", "1 4 1\n1 1 2 3 5 1\n");
+  expect_error(dir, "t.ele", "1 4 1\n1 1 2 3 5 1\n", InputErrorKind::IndexOutOfRange, "t.ele:2:");
+  expect_error(dir, "t.ele", "1 4 1\n1 0 1 2 3 1\n", InputErrorKind::IndexOutOfRange, "t.ele:2:");  // 1-based ids
+  expect_error(dir, "t.ele", "70000000 4 0\n", InputErrorKind::AbsurdCount, "t.ele:1:");
+  expect_error(dir, "t.node", "1 2 0 0\n1 0 0\n", InputErrorKind::Unsupported, "t.node:1:");
+  expect_error(dir, "a.inp", "*NODE\n1, 0, 0, 0\n*ELEMENT, TYPE=C3D8\n", InputErrorKind::Unsupported, ":3:");
+  expect_error(dir, "b.inp", "*NODE\n1, 0, 0, 0\n*ELEMENT, TYPE=C3D4\n1, 1, 1, 1, 2\n", InputErrorKind::IndexOutOfRange, ":4:");
+  expect_error(dir, "c.inp", "*NODE\n1, 0, zero, 0\n", InputErrorKind::Syntax, ":2:");
+  expect_error(dir, "d.inp", "*NODE\n1, 0, 0, 0\n*SURFACE, NAME=S, TYPE=ELEMENT\n1, S7\n", InputErrorKind::Syntax, ":4:");
+  expect_error(dir, "e.unknown", "hello\n", InputErrorKind::UnknownFormat, "");
+}
+
+}  // namespace
+}  // namespace sweepcdt::io
