@@ -138,7 +138,10 @@ void notate(Plc<3>& plc, const std::vector<std::array<double, 3>>& holes, const 
     shell[t] = s;
     members[s].push_back(static_cast<uint32_t>(t));
   }
-  // Cells eaten by hole points: the innermost shell containing each.
+  // Cells eaten by hole points: the innermost shell containing each. Each hole costs a scan of the
+  // triangles; a file with very many of both is refused rather than left to run for minutes.
+  if (holes.size() * uint64_t{m} > (uint64_t{1} << 28))
+    fail(InputErrorKind::Unsupported, file, Location::none(), std::to_string(holes.size()) + " hole points in " + std::to_string(m) + " triangles is too many to locate");
   std::vector<uint8_t> eaten(report.shells.size(), 0);
   for (std::size_t h = 0; h < holes.size(); ++h) {
     const double* q = holes[h].data();
