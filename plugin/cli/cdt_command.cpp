@@ -65,6 +65,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
   Options cdt_options;
   cdt_options.algorithm = options.algorithm;
   cdt_options.steiner = options.steiner;
+  cdt_options.facets = options.facets;
   cdt_options.statistics = &r.cdt;
   cdt_options.progress = progress.callback();
   Plc<D> triangulated;

@@ -58,6 +58,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     Options cdt_options;
     cdt_options.algorithm = options.algorithm;
     cdt_options.steiner = options.steiner;
+    cdt_options.facets = options.facets;
     cdt_options.statistics = &r.cdt;
     cdt_options.progress = progress.callback();
     Plc<3> triangulated;

@@ -3,6 +3,7 @@
 namespace sweepcdt::cli {
 
 const char* to_string(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
+const char* to_string(FacetMode mode) { return mode == FacetMode::Coplanar ? "coplanar" : "triangles"; }
 
 bool read_run_option(ArgReader& args, RunOptions& options) {
   std::string v;
@@ -16,11 +17,9 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
     else if (v == "none") options.steiner = SteinerMode::None;
     else throw UsageError("--steiner must be auto or none, not '" + v + "'");
   } else if (args.value("--facets", v)) {
-    // Triangles are what every reader produces and what cdt() constrains. Merging coplanar
-    // triangles into polygonal facets (fewer constraints, fewer Steiner points) needs support in
-    // core's Options that does not exist yet: refuse rather than silently ignore the request.
-    if (v == "coplanar") throw UsageError("--facets coplanar is not yet supported (only --facets triangles)");
-    if (v != "triangles") throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
+    if (v == "triangles") options.facets = FacetMode::Triangles;
+    else if (v == "coplanar") options.facets = FacetMode::Coplanar;
+    else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
   } else if (args.flag("--check")) {
     options.check = true;
   } else if (args.value("--stats", v)) {

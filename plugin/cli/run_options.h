@@ -11,15 +11,16 @@ namespace sweepcdt::cli {
 struct RunOptions {
   Algorithm algorithm = Algorithm::SweepSphere;
   SteinerMode steiner = SteinerMode::Auto;
+  FacetMode facets = FacetMode::Triangles;  // --facets triangles|coplanar (3D)
   bool check = false;      // --check: validate the result again before writing it
   std::string stats_file;  // --stats FILE.json
   bool quiet = false;      // --quiet: errors only
 };
 
 const char* to_string(SteinerMode mode);  // "auto", "none"
+const char* to_string(FacetMode mode);    // "triangles", "coplanar"
 
 // Consumes one of the shared options at the reader's position; false if it is none of them.
-// `--facets coplanar` is recognised and refused (UsageError): core cannot merge coplanar facets yet.
 bool read_run_option(ArgReader& args, RunOptions& options);
 
 }  // namespace sweepcdt::cli

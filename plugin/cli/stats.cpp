@@ -41,6 +41,8 @@ nlohmann::ordered_json file_json(const FileResult& r) {
     j["algorithm"] = to_string(r.cdt.algorithm);  // the one that ran (sweep-plane falls back to the sphere on hulls)
     j["steiner_points"] = r.cdt.steiner_points;
     j["steiner_rounds"] = r.cdt.steiner_rounds;
+    j["facets"] = r.cdt.facets;
+    j["facet_flips"] = r.cdt.facet_flips;
     j[r.dimension == 3 ? "tetrahedra" : "simplices"] = r.simplices;
     if (r.dimension == 3) {
       j["boundary_triangles"] = r.boundary_triangles;
@@ -81,6 +83,7 @@ void write_stats(const std::string& file, const RunSummary& run, const std::vect
   j["command"] = run.command;
   j["algorithm"] = to_string(run.options.algorithm);  // requested; per file: the one that ran
   j["steiner"] = to_string(run.options.steiner);
+  j["facets"] = to_string(run.options.facets);
   j["check"] = run.options.check;
   j["threads"] = run.threads;
   j["exit_code"] = run.exit_code;

@@ -2,11 +2,11 @@
 // file says beyond its points and tetrahedra:
 //
 // 1. The input's welded points come first in the mesh, bit for bit (the writers promise this).
-// 2. Steiner points. `--steiner auto` puts them at a + (b - a)/2 in double arithmetic, a and b on
-//    one input triangle (its vertices or earlier Steiner points), so they lie on the triangle only
-//    up to rounding — an exact "point on triangle" test would reject correct meshes, and any
+// 2. Steiner points. `--steiner auto` splits input edges (sweepcdt/steiner_point.h: at a power of
+//    two from an input vertex, or at a + (b - a)/2) in double arithmetic, so they lie on the edge
+//    only up to rounding — an exact "point on triangle" test would reject correct meshes, and any
 //    tolerance would be a guess. Instead each Steiner point (in order) must be reproduced bit for
-//    bit by that construction from two points already known to lie on the same input triangle.
+//    bit by that construction from two points already known to lie on one edge of an input triangle.
 //    Points exactly coplanar with their triangle are counted separately.
 // 3. The refined surface: the boundary facets of the tetrahedra (facets of one tetrahedron). Each
 //    must have all three vertices on one input triangle (2.), with the tetrahedron on the side that
@@ -23,6 +23,7 @@
 #include <map>
 
 #include "sweepcdt/predicates.h"
+#include "sweepcdt/steiner_point.h"
 #include "sweepcdt/validate.h"
 
 namespace sweepcdt::cli {
@@ -59,11 +60,12 @@ std::string ids_text(const uint32_t* ids, int n) {
 
 bool same_point(const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
-// The construction of segment_recovery.cpp, operation for operation.
-bool is_midpoint(const double* s, const double* a, const double* b) {
-  for (int k = 0; k < 3; ++k)
-    if (s[k] != a[k] + (b[k] - a[k]) / 2) return false;
-  return true;
+// The construction of --steiner auto (sweepcdt/steiner_point.h), operation for operation: a is the
+// end with the smaller id.
+bool is_split_point(const double* s, const double* a, bool a_is_input, const double* b, bool b_is_input) {
+  double x[3];
+  segment_split_point(a, a_is_input, b, b_is_input, x);
+  return s[0] == x[0] && s[1] == x[1] && s[2] == x[2];
 }
 
 struct OnTriangle {
@@ -124,7 +126,9 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       uint8_t edges = 0;
       for (std::size_t a = 0; a < known.size() && !found; ++a)
         for (std::size_t b = 0; b < known.size() && !found; ++b)
-          if (a != b && is_midpoint(ps, mesh.points.data() + 3 * std::size_t{known[a].point}, mesh.points.data() + 3 * std::size_t{known[b].point})) {
+          if (known[a].point < known[b].point && (known[a].edges & known[b].edges) &&
+              is_split_point(ps, mesh.points.data() + 3 * std::size_t{known[a].point}, known[a].point < n,
+                             mesh.points.data() + 3 * std::size_t{known[b].point}, known[b].point < n)) {
             found = true;
             edges = known[a].edges & known[b].edges;
           }
@@ -133,7 +137,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       triangles_of[s].push_back(j);
     }
     if (triangles_of[s].empty()) {
-      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the midpoint of two points on one input triangle");
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the split point of two points on one input edge");
       continue;
     }
     const uint32_t* t = input.simplex(triangles_of[s].front());

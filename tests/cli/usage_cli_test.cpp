@@ -38,7 +38,6 @@ TEST(CliUsage, MistakesExitTwoWithUsageAndWriteNothing) {
       {kIcosahedron + " -o " + out + " --verbose", "unknown option '--verbose'"},
       {"mesh " + kIcosahedron + " -o " + out + " --algorithm quick", "--algorithm must be"},
       {"mesh " + kIcosahedron + " -o " + out + " --steiner some", "--steiner must be auto or none"},
-      {"mesh " + kIcosahedron + " -o " + out + " --facets coplanar", "--facets coplanar is not yet supported"},
       {"mesh " + kIcosahedron + " -o " + out + " --facets polygons", "--facets must be"},
       {"mesh " + kIcosahedron + " -o " + out + " --check=yes", "--check takes no value"},
       {"mesh " + kIcosahedron, "give either -o OUTPUT"},

@@ -55,7 +55,7 @@ struct Progress {
 //          the (perturbed) Delaunay triangulation of all points; each facet is then re-triangulated by
 //          its own 2D CDT, and Shewchuk's CDT theorem says the refined PLC has a CDT. Steiner points lie
 //          on input segments, rounded to the nearest doubles (within half an ulp per coordinate of a
-//          point of the segment); core/src/steiner/README.md has the details.
+//          point of the segment); core/src/steiner/refine.h has the details.
 //   D >= 4: not implemented; Auto behaves as None (NoCdtError when no CDT exists).
 enum class SteinerMode {
   None,  // the PLC as given: NoCdtError when it has no CDT (paper §2)

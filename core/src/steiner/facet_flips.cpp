@@ -33,7 +33,7 @@ class Flipper {
   uint64_t run() {
     // Lawson's flips end for exactly coplanar facets; the cap guards facets coplanar only to within
     // rounding, where the in-circle test is approximate.
-    const uint64_t cap = 50 * uint64_t{f_.triangles.size()} + 1000;
+    const uint64_t cap = 10 * uint64_t{f_.triangles.size()} + 1000;
     uint64_t flips = 0;
     while (!pending_.empty() && flips < cap) {
       const uint64_t key = pending_.back();

@@ -6,10 +6,10 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "../gift_wrap.h"
-#include "../sweep/sweep_cdt.h"
+#include "delaunay3.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
+#include "sweepcdt/steiner_point.h"
 
 namespace sweepcdt::detail {
 namespace {
@@ -21,21 +21,15 @@ using Triangle = std::array<uint32_t, 3>;
 constexpr uint64_t kMaxRounds = 200;
 std::size_t steiner_budget(std::size_t input_points) { return 20 * input_points + 10000; }
 
-// The edges of the perturbed Delaunay triangulation of the points (no constraints: sweep sphere).
-std::unordered_set<uint64_t> delaunay_edges(const std::vector<double>& coordinates, const Options& options) {
-  Plc<3> points;
-  points.points = coordinates;
-  CdtStatistics stats;
-  Options quiet = options;
-  quiet.progress = nullptr;
-  const Triangulation<3> dt = sweep_cdt<3>(points, seed_simplex(points), quiet, stats);
+// The edges of the perturbed Delaunay triangulation of the points (no constraints; the incremental
+// construction gives the same unique triangulation as the sweep sphere, much faster).
+std::unordered_set<uint64_t> delaunay_edges(const std::vector<double>& coordinates) {
+  const auto tetrahedra = delaunay_tetrahedra(coordinates);
   std::unordered_set<uint64_t> edges;
-  edges.reserve(dt.num_simplices() * 2);
-  for (std::size_t t = 0; t < dt.num_simplices(); ++t) {
-    const uint32_t* s = dt.simplex(t);
+  edges.reserve(tetrahedra.size() * 2);
+  for (const auto& s : tetrahedra)
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) edges.insert(edge_key(s[i], s[j]));
-  }
   return edges;
 }
 
@@ -72,7 +66,7 @@ class Refiner {
 
   void split_until_delaunay() {
     for (;; ++r_.rounds) {
-      const auto delaunay = delaunay_edges(points_, options_);
+      const auto delaunay = delaunay_edges(points_);
       // Segments that are not Delaunay, each once, in triangle order (deterministic).
       std::vector<uint64_t> split;
       std::unordered_set<uint64_t> marked;
@@ -93,16 +87,7 @@ class Refiner {
   uint32_t add_split_point(uint64_t key) {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
     double x[3];
-    if (is_input(a) != is_input(b)) {
-      const uint32_t v = is_input(a) ? a : b, w = is_input(a) ? b : a;
-      double length2 = 0;
-      for (int k = 0; k < 3; ++k) length2 += (p(w)[k] - p(v)[k]) * (p(w)[k] - p(v)[k]);
-      const double length = std::sqrt(length2);
-      const double t = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
-      for (int k = 0; k < 3; ++k) x[k] = p(v)[k] + t * (p(w)[k] - p(v)[k]);
-    } else {
-      for (int k = 0; k < 3; ++k) x[k] = p(a)[k] + (p(b)[k] - p(a)[k]) / 2;
-    }
+    segment_split_point(p(a), is_input(a), p(b), is_input(b), x);  // a < b: edge_key sorts
     if (std::equal(x, x + 3, p(a)) || std::equal(x, x + 3, p(b)))
       throw NoCdtError("Steiner points: a segment is too short to split in double precision", {a, b});
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);

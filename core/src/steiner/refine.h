@@ -13,6 +13,7 @@
 //      about it, so segments at a small angle do not split each other without end);
 //   3. the triangles holding a split segment are split at the new point (facet-interior edges are
 //      not segments: they need not be Delaunay).
+//   (Step 1 uses the incremental construction of delaunay3.h: the same triangulation as the sweep.)
 // Then each facet is flipped to its own 2D CDT (facet_flips.h) and cdt() triangulates the result.
 //
 // Exactness: a split point is computed in floating point, so it lies on its segment only as closely

@@ -1,0 +1,34 @@
+// Incremental 3D Delaunay triangulation (Bowyer–Watson) under the lifting-map perturbation of paper
+// §6: the same unique triangulation the sweep sphere builds for a point set without constraints, but
+// in O(n log n) expected time. Steiner refinement (refine.cpp) needs it once per round.
+//
+// Every geometric decision is an exact predicate (predicates::orient<3>, insphere_perturbed<3>);
+// floating point only chooses the insertion order (a BRIO of Hilbert-sorted rounds) and the walk's
+// random face order, neither of which can change the result: the perturbed Delaunay triangulation
+// is unique.
+//
+// The convex hull is handled with an infinite vertex: every hull triangle abc carries a ghost
+// tetrahedron (a, b, c, oo). A new point p conflicts with it when p lies strictly outside abc, or in
+// the plane of abc and inside the perturbed circumcircle of abc. The latter is decided as the
+// insphere test of the finite tetrahedron abcd behind abc (see facet_flips.h: d's cofactor is
+// orient(a, b, c, p) = 0, so d is never the decisive vertex of the perturbation), which makes the
+// ghost and its finite neighbour agree for coplanar p, so no flat tetrahedron is ever created.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sweepcdt::detail {
+
+// Tetrahedra (4 point ids each, positively oriented: predicates::orient<3> > 0) of the perturbed
+// Delaunay triangulation of the points (n x 3 doubles), covering their convex hull.
+// Requires at least 4 affinely independent points; throws sweepcdt::Error otherwise, and for
+// duplicate or non-finite points.
+std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points);
+
+// The same triangulation, inserting the points in the given order (a permutation of 0..n-1) instead
+// of the spatial order. For tests: the result must not depend on the order.
+std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra_in_order(const std::vector<double>& points,
+                                                                  const std::vector<uint32_t>& order);
+
+}  // namespace sweepcdt::detail

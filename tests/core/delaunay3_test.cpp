@@ -1,0 +1,272 @@
+// delaunay_tetrahedra (incremental Bowyer–Watson, core/src/steiner/delaunay3.h) against the sweep
+// sphere's unconstrained Delaunay triangulation: identical tetrahedron sets under the §6 perturbation
+// on random points and on inputs full of cospherical and coplanar points (grids, spheres, points in
+// the planes of hull triangles, inside and outside their circumcircles), in several insertion orders.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+
+#include "steiner/delaunay3.h"
+#include "sweep/sweep_cdt.h"
+#include "gift_wrap.h"
+#include "sweepcdt/error.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "triangulation_util.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+using Tet = std::array<uint32_t, 4>;
+using TetSet = std::set<std::vector<uint32_t>>;
+
+TetSet sweep_delaunay(const std::vector<double>& points) {
+  Plc<3> plc;
+  plc.points = points;
+  Options options;
+  CdtStatistics stats;
+  return fixtures::simplex_set(detail::sweep_cdt<3>(plc, detail::seed_simplex(plc), options, stats));
+}
+
+TetSet as_set(const std::vector<Tet>& tets) {
+  TetSet set;
+  for (Tet t : tets) {
+    std::sort(t.begin(), t.end());
+    set.insert(std::vector<uint32_t>(t.begin(), t.end()));
+  }
+  return set;
+}
+
+// Positive orientation, no repeated tetrahedron, every triangle in one or two tetrahedra, and the
+// hull triangles (in one) form a closed surface: each of their edges is in exactly two of them.
+void expect_valid(const std::vector<double>& points, const std::vector<Tet>& tets, const std::string& what) {
+  std::map<std::array<uint32_t, 3>, int> triangles;
+  for (const Tet& t : tets) {
+    const double* x[4];
+    for (int k = 0; k < 4; ++k) x[k] = points.data() + 3 * t[k];
+    ASSERT_EQ(predicates::orient<3>({x[0], x[1], x[2], x[3]}), predicates::Sign::Positive) << what;
+    for (int i = 0; i < 4; ++i) {
+      std::array<uint32_t, 3> f;
+      for (int k = 0, r = 0; k < 4; ++k)
+        if (k != i) f[r++] = t[k];
+      std::sort(f.begin(), f.end());
+      ++triangles[f];
+    }
+  }
+  EXPECT_EQ(as_set(tets).size(), tets.size()) << what << ": repeated tetrahedron";
+  std::map<std::pair<uint32_t, uint32_t>, int> hull_edges;
+  for (const auto& [f, count] : triangles) {
+    ASSERT_LE(count, 2) << what << ": triangle in more than two tetrahedra";
+    if (count == 1)
+      for (int i = 0; i < 3; ++i) ++hull_edges[std::minmax(f[i], f[(i + 1) % 3])];
+  }
+  for (const auto& [e, count] : hull_edges) ASSERT_EQ(count, 2) << what << ": hull is not closed";
+}
+
+// The default (BRIO) order plus index order, reverse order and random orders all give the sweep's
+// triangulation.
+void expect_same_as_sweep(const std::vector<double>& points, const std::string& what, int random_orders = 2) {
+  const TetSet reference = sweep_delaunay(points);
+  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  expect_valid(points, tets, what);
+  EXPECT_EQ(as_set(tets), reference) << what;
+
+  const uint32_t n = static_cast<uint32_t>(points.size() / 3);
+  std::vector<uint32_t> order(n);
+  for (uint32_t i = 0; i < n; ++i) order[i] = i;
+  std::vector<std::vector<uint32_t>> orders{order, std::vector<uint32_t>(order.rbegin(), order.rend())};
+  std::mt19937_64 rng(n);
+  for (int k = 0; k < random_orders; ++k) {
+    std::shuffle(order.begin(), order.end(), rng);
+    orders.push_back(order);
+  }
+  for (std::size_t k = 0; k < orders.size(); ++k) {
+    const std::vector<Tet> again = detail::delaunay_tetrahedra_in_order(points, orders[k]);
+    expect_valid(points, again, what + " order " + std::to_string(k));
+    EXPECT_EQ(as_set(again), reference) << what << " order " << std::to_string(k);
+  }
+}
+
+std::vector<double> random_points(int count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::vector<double> points(3 * count);
+  for (double& x : points) x = coordinate(rng);
+  return points;
+}
+
+std::vector<double> grid(int nx, int ny, int nz) {
+  std::vector<double> points;
+  for (int x = 0; x < nx; ++x)
+    for (int y = 0; y < ny; ++y)
+      for (int z = 0; z < nz; ++z) points.insert(points.end(), {double(x), double(y), double(z)});
+  return points;
+}
+
+TEST(Delaunay3, RandomPoints) {
+  for (int count : {4, 5, 10, 50, 200, 1000})
+    for (uint64_t seed = 0; seed < 4; ++seed)
+      expect_same_as_sweep(random_points(count, seed), "random " + std::to_string(count) + " seed " + std::to_string(seed));
+  expect_same_as_sweep(random_points(5000, 7), "random 5000", 1);
+}
+
+TEST(Delaunay3, FullGrids) {
+  expect_same_as_sweep(grid(2, 2, 2), "2x2x2 grid", 6);
+  expect_same_as_sweep(grid(3, 3, 3), "3x3x3 grid", 6);
+  expect_same_as_sweep(grid(6, 6, 6), "6x6x6 grid");
+  expect_same_as_sweep(grid(10, 4, 2), "10x4x2 grid");
+  expect_same_as_sweep(grid(12, 12, 2), "12x12x2 grid");
+}
+
+TEST(Delaunay3, RandomGridSubsets) {
+  int compared = 0;
+  for (uint64_t seed = 0; seed < 60; ++seed) {
+    std::mt19937_64 rng(seed);
+    const int size = seed % 3 == 0 ? 2 : 3;
+    const int count = std::min(8 + static_cast<int>(seed % 30), (size + 1) * (size + 1) * (size + 1));
+    const std::vector<double> points = fixtures::distinct_grid_points<3>(rng, count, size);
+    std::vector<Tet> tets;
+    try {
+      tets = detail::delaunay_tetrahedra(points);
+    } catch (const Error&) {
+      continue;  // all in one plane
+    }
+    expect_same_as_sweep(points, "grid subset seed " + std::to_string(seed));
+    ++compared;
+  }
+  EXPECT_GE(compared, 50);
+}
+
+// All integer points on spheres: every tetrahedron is cospherical with all the others' vertices.
+TEST(Delaunay3, CosphericalPoints) {
+  for (int r2 : {3, 9, 11, 26, 50, 75}) {
+    std::vector<double> points;
+    for (int x = -9; x <= 9; ++x)
+      for (int y = -9; y <= 9; ++y)
+        for (int z = -9; z <= 9; ++z)
+          if (x * x + y * y + z * z == r2) points.insert(points.end(), {double(x), double(y), double(z)});
+    expect_same_as_sweep(points, "sphere r^2=" + std::to_string(r2), 4);
+    points.insert(points.end(), {0.0, 0.0, 0.0});  // and its centre
+    expect_same_as_sweep(points, "sphere with centre r^2=" + std::to_string(r2), 4);
+  }
+}
+
+// Almost all points in one plane (a hull facet with many points, triangulated by the 2D perturbed
+// Delaunay rule), plus a few points off it.
+TEST(Delaunay3, MostlyCoplanar) {
+  for (uint64_t seed = 0; seed < 8; ++seed) {
+    std::mt19937_64 rng(100 + seed);
+    std::vector<double> points;
+    std::uniform_int_distribution<int> c(0, 6);
+    std::set<std::array<int, 2>> seen;
+    while (seen.size() < 30) {
+      const std::array<int, 2> p{c(rng), c(rng)};
+      if (seen.insert(p).second) points.insert(points.end(), {double(p[0]), double(p[1]), 0.0});
+    }
+    const int off = 1 + static_cast<int>(seed % 3);
+    for (int k = 0; k < off; ++k) points.insert(points.end(), {double(c(rng)), double(c(rng)), k % 2 ? -3.0 : 2.0 + k});
+    // Put the off-plane points first or last in index order: the perturbation order changes.
+    if (seed % 2) {
+      std::vector<double> rotated(points.end() - 3 * off, points.end());
+      rotated.insert(rotated.end(), points.begin(), points.end() - 3 * off);
+      points = rotated;
+    }
+    expect_same_as_sweep(points, "mostly coplanar seed " + std::to_string(seed), 4);
+  }
+}
+
+// Integer points on a few planes (two parallel, two slanted), so that hull facets and interior
+// triangles carry many coplanar and cocircular points.
+TEST(Delaunay3, PointsOnFewPlanes) {
+  for (uint64_t seed = 0; seed < 12; ++seed) {
+    std::mt19937_64 rng(500 + seed);
+    std::uniform_int_distribution<int> c(0, 6), plane(0, 3);
+    std::set<std::array<int, 3>> seen;
+    std::vector<double> points;
+    while (seen.size() < 20 + 5 * seed) {
+      const int a = c(rng), b = c(rng);
+      std::array<int, 3> p;
+      switch (plane(rng)) {
+        case 0: p = {a, b, 0}; break;
+        case 1: p = {a, b, 4}; break;
+        case 2: p = {a, 6 - a, b}; break;
+        default: p = {a, b, a}; break;
+      }
+      if (seen.insert(p).second) points.insert(points.end(), {double(p[0]), double(p[1]), double(p[2])});
+    }
+    expect_same_as_sweep(points, "few planes seed " + std::to_string(seed), 3);
+  }
+}
+
+// A tetrahedron inserted first, then points in the planes of its faces: inside a face triangle, outside
+// the triangle but inside its circumcircle, on the circumcircle, outside it, on an edge's line.
+TEST(Delaunay3, PointsInHullFacePlanes) {
+  const std::vector<double> corners{0, 0, 0, 12, 0, 0, 0, 12, 0, 0, 0, 12};
+  const std::vector<std::array<double, 3>> extra{
+      {5, 5, 0},   {10, 10, 0}, {12, 12, 0}, {14, -2, 0}, {-2, 14, 0}, {6, -1, 0},  {18, 0, 0},  {-4, 0, 0},
+      {0, 5, 5},   {0, 10, 10}, {0, 12, 12}, {0, 14, -2}, {3, 0, 4},   {12, 0, 12}, {0, -3, 0},  {4, 4, 4},
+      {6, 6, 0},   {0, 6, 6},   {6, 0, 6},   {-6, 18, 0}, {3, 3, 6},   {0, 0, -5},  {20, 20, 0}, {6, 6, -6}};
+  for (uint64_t seed = 0; seed < 40; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<std::array<double, 3>> chosen = extra;
+    std::shuffle(chosen.begin(), chosen.end(), rng);
+    chosen.resize(4 + seed % 12);
+    std::vector<double> points = corners;
+    for (const auto& p : chosen) points.insert(points.end(), p.begin(), p.end());
+    const uint32_t n = static_cast<uint32_t>(points.size() / 3);
+    // The corners first (so the extra points meet the hull faces' planes), the rest shuffled.
+    std::vector<uint32_t> order(n);
+    for (uint32_t i = 0; i < n; ++i) order[i] = i;
+    std::shuffle(order.begin() + 4, order.end(), rng);
+    const TetSet reference = sweep_delaunay(points);
+    const std::vector<Tet> tets = detail::delaunay_tetrahedra_in_order(points, order);
+    expect_valid(points, tets, "face planes seed " + std::to_string(seed));
+    EXPECT_EQ(as_set(tets), reference) << "face planes seed " << seed;
+    // The same points with the ids reversed: the perturbation favours the other end.
+    std::vector<double> reversed;
+    for (uint32_t i = n; i-- > 0;) reversed.insert(reversed.end(), points.begin() + 3 * i, points.begin() + 3 * i + 3);
+    expect_same_as_sweep(reversed, "face planes reversed ids seed " + std::to_string(seed), 2);
+  }
+}
+
+// The spatial sort must survive an extent that overflows (it only orders; predicates are exact).
+TEST(Delaunay3, HugeCoordinates) {
+  std::vector<double> points = random_points(40, 99);
+  for (double& x : points) x *= 1e308;
+  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  expect_valid(points, tets, "huge");
+  EXPECT_EQ(as_set(tets), sweep_delaunay(points));
+}
+
+TEST(Delaunay3, Throws) {
+  EXPECT_THROW(detail::delaunay_tetrahedra({}), Error);
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 5, 7, 0}), Error);  // flat
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}), Error);           // collinear
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0}), Error);  // duplicate
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2}), Error);
+  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);  // not n x 3
+  EXPECT_THROW(detail::delaunay_tetrahedra_in_order({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 2}), Error);
+  EXPECT_EQ(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}).size(), 1u);
+}
+
+// Not a timing assertion: prints both times for the report (bench/sweep_bench cube-points 33000).
+TEST(Delaunay3, Large33kAgainstSweep) {
+  const std::vector<double> points = random_points(33000, 2024);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  const auto t1 = std::chrono::steady_clock::now();
+  const TetSet reference = sweep_delaunay(points);
+  const auto t2 = std::chrono::steady_clock::now();
+  const auto ms = [](auto d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  std::printf("33000 random points: delaunay_tetrahedra %.1f ms (%zu tets), sweep %.1f ms\n", ms(t1 - t0), tets.size(),
+              ms(t2 - t1));
+  EXPECT_EQ(as_set(tets), reference);
+}
+
+}  // namespace
