@@ -10,10 +10,13 @@
 namespace sweepcdt::cli {
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+// Read by every worker thread, written by the handler: a lock-free atomic is safe in both roles
+// (a volatile sig_atomic_t would be a data race between threads).
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
 
 extern "C" void on_sigint(int) {
-  g_interrupted = 1;
+  g_interrupted.store(true);
   std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
 }
 
@@ -24,7 +27,7 @@ constexpr int kBarWidth = 30;
 }  // namespace
 
 void install_interrupt_handler() { std::signal(SIGINT, on_sigint); }
-bool interrupted() { return g_interrupted != 0; }
+bool interrupted() { return g_interrupted.load(std::memory_order_relaxed); }
 void throw_if_interrupted() {
   if (interrupted()) throw CancelledError();
 }
