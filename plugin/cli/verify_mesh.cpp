@@ -13,6 +13,8 @@
 //    the input's exterior notation says is inside, and every input triangle must be covered by as
 //    many such facets as a triangulation of it with its points has (b + 2i - 2: b points on its
 //    edges, i inside). Without Steiner points the input PLC itself is used instead: exact.
+//    The file's own boundary triangles (what solvers read) must be exactly these facets, oriented
+//    outward, tagged with their input triangle.
 // 4. validate() of the tetrahedra against that PLC: topology, orientation, every constraint a
 //    facet, the domain covered (exact volume sums), every interior facet locally Delaunay.
 #include "verify_mesh.h"
@@ -72,6 +74,38 @@ struct OnTriangle {
 };
 
 using Facet = std::array<uint32_t, 3>;
+
+bool same_rotation(const Facet& a, const Facet& b) {
+  return a == b || a == Facet{b[1], b[2], b[0]} || a == Facet{b[2], b[0], b[1]};
+}
+
+// 3b. What solvers read as the boundary — the file's boundary triangles and their tags — must be
+// the tetrahedra's boundary facets, counterclockwise seen from outside, each tagged with the input
+// triangle it lies on. `on_input`: the boundary facets found from the tetrahedra.
+void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Facet, std::pair<Facet, uint32_t>>& on_input, Problems& problems,
+                         MeshVerification& v) {
+  v.file_boundary = mesh.num_boundary() > 0;
+  if (!v.file_boundary) return;
+  const bool tagged = mesh.boundary_tags.size() == mesh.num_boundary();
+  std::size_t listed = 0;
+  for (std::size_t k = 0; k < mesh.num_boundary(); ++k) {
+    const Facet g{mesh.boundary[3 * k], mesh.boundary[3 * k + 1], mesh.boundary[3 * k + 2]};
+    Facet key = g;
+    std::sort(key.begin(), key.end());
+    const auto it = on_input.find(key);
+    const std::string name = "the file's boundary triangle " + std::to_string(k) + " (" + ids_text(g.data(), 3) + ")";
+    if (it == on_input.end()) {
+      problems.add(name + " is not a boundary facet of the tetrahedra");
+      continue;
+    }
+    ++listed;
+    if (!same_rotation(g, it->second.first)) problems.add(name + " is oriented inward (clockwise seen from outside)");
+    if (tagged && mesh.boundary_tags[k] != it->second.second)
+      problems.add(name + " is tagged " + std::to_string(mesh.boundary_tags[k]) + " but lies on input triangle " + std::to_string(it->second.second));
+  }
+  if (listed < on_input.size())
+    problems.add(std::to_string(on_input.size() - listed) + " boundary facets of the tetrahedra are missing from the file's boundary triangles");
+}
 
 }  // namespace
 
@@ -161,6 +195,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
   Plc<3> refined;
   refined.points = mesh.points;
   std::vector<std::size_t> pieces(m, 0);
+  std::map<Facet, std::pair<Facet, uint32_t>> on_input;  // sorted ids -> (oriented boundary facet, input triangle)
   for (const auto& [key, entry] : facets) {
     if (entry.first != 1) continue;  // interior (2) or over-shared (validate() reports it)
     ++v.boundary_triangles;
@@ -184,6 +219,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       problems.add("boundary triangle (" + ids_text(f.data(), 3) + ") on input triangle " + std::to_string(j) +
                    " has its tetrahedron on the outside of the surface");
     ++pieces[j];
+    on_input.emplace(key, std::make_pair(f, j));
     refined.simplices.insert(refined.simplices.end(), f.begin(), f.end());
     refined.exterior.push_back(ExteriorSide::Negative);
     refined.tags.push_back(j);
@@ -196,6 +232,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       problems.add("input triangle " + std::to_string(j) + " (" + ids_text(input.simplex(j), 3) + ") is covered by " + std::to_string(pieces[j]) +
                    " boundary triangles; a triangulation of it with its " + std::to_string(b + i) + " points has " + std::to_string(expected));
   }
+  check_file_boundary(mesh, on_input, problems, v);
   if (!v.ok()) return v;
 
   // 4. validate(): against the input itself when nothing was added.

@@ -1,6 +1,7 @@
 // `sweepcdt check INPUT OUTPUT`: accepts what `sweepcdt` wrote, rejects (exit 6) meshes that are
 // not the CDT — a tetrahedron removed, a vertex moved, a Steiner point moved by one ulp, a flip that
-// keeps a valid tetrahedralization but breaks the Delaunay property — and says why.
+// keeps a valid tetrahedralization but breaks the Delaunay property, boundary triangles flipped,
+// mistagged or missing — and says why.
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -73,6 +74,7 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
   EXPECT_EQ(ok.exit_code, 0) << ok.out;
   EXPECT_TRUE(ok.says("moon.mesh: " + std::to_string(mesh.num_tetrahedra()) + " tetrahedra, 2502 vertices (0 Steiner points)")) << ok.out;
   EXPECT_TRUE(ok.says("every interior facet locally Delaunay")) << ok.out;
+  EXPECT_TRUE(ok.says("the file's boundary triangles are those, oriented outward, tagged")) << ok.out;
 
   const auto tampered = dir.path() / "tampered.mesh";
   {
@@ -99,6 +101,23 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
     const CliRun r = check(input, tampered, dir);
     EXPECT_EQ(r.exit_code, 6) << r.out;
     EXPECT_TRUE(r.says("locally-delaunay")) << r.out;
+  }
+  // What solvers read as the boundary: orientation, tags, completeness.
+  {
+    io::VolumeMesh m = mesh;
+    ASSERT_GT(m.num_boundary(), 10u);
+    std::swap(m.boundary[3 * 5 + 1], m.boundary[3 * 5 + 2]);
+    m.boundary_tags[9] = m.boundary_tags[9] == 0 ? 1 : 0;
+    m.boundary.resize(m.boundary.size() - 3);
+    m.boundary_tags.pop_back();
+    io::write_volume_mesh(tampered, m, io::MeshFormat::Gmsh41);
+    const CliRun r = check(input, tampered, dir);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("the file's boundary triangle 5 (")) << r.out;
+    EXPECT_TRUE(r.says("is oriented inward")) << r.out;
+    EXPECT_TRUE(r.says("the file's boundary triangle 9 (")) << r.out;
+    EXPECT_TRUE(r.says("but lies on input triangle")) << r.out;
+    EXPECT_TRUE(r.says("1 boundary facets of the tetrahedra are missing from the file's boundary triangles")) << r.out;
   }
   // Another surface's mesh.
   const CliRun other = check(shared_data() / "off/icosahedron.off", good, dir);
