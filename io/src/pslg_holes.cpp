@@ -13,8 +13,8 @@ namespace {
 using predicates::Sign;
 
 // Work bound for locating hole points by scanning the triangles (holes are few in practice; a file
-// with millions of holes and triangles is refused rather than left to run for hours).
-constexpr uint64_t kMaxHoleScan = uint64_t{1} << 32;
+// with many thousands of holes and triangles is refused rather than left to run for minutes).
+constexpr uint64_t kMaxHoleScan = uint64_t{1} << 28;
 
 struct Eaten {
   Triangulation<2> tri;

@@ -1,10 +1,11 @@
 // TetGen .poly / .smesh (3D): points (or the .node beside the file), facets, volume holes, regions.
 //
 // Facets: a .poly facet is polygons (1 or 2 corners: points and segments inside the facet) and facet
-// holes; a .smesh facet is one polygon. Each facet must be planar (decided exactly with orient<3>)
-// and is triangulated in a projection on a coordinate plane (exact: a coordinate is dropped) by the
-// same exact CDT and eating as Triangle's .poly (pslg_holes.h): its polygons' edges are segments,
-// facet holes eat. Every triangle is tagged with its facet's boundary marker when the file has
+// holes; a .smesh facet is one polygon. Each facet must be planar (decided exactly with orient<3>).
+// A facet of one polygon goes through io's polygon triangulation (polygon.cpp); any other is
+// triangulated in a projection on a coordinate plane (exact: a coordinate is dropped) by the same
+// exact CDT and eating as Triangle's .poly (pslg_holes.h): its polygons' edges are segments, facet
+// holes eat. Every triangle is tagged with its facet's boundary marker when the file has
 // markers, else with the facet index.
 //
 // Domain: TetGen eats tetrahedra from the convex hull inward and from volume hole points, never
@@ -42,8 +43,10 @@ bool collinear(const double* a, const double* b, const double* c) {
   return true;
 }
 
-// Appends the facet's triangles (3D ids) to `out`.
-void triangulate_facet(const std::vector<double>& points, const Facet& f, const std::string& file, std::vector<uint32_t>& out) {
+// Appends the facet's triangles (3D ids) to `soup.triangles` (soup.points: the file's points).
+void triangulate_facet(Soup& soup, const Facet& f) {
+  const std::vector<double>& points = soup.points;
+  const std::string& file = soup.file;
   auto p = [&](uint32_t id) { return points.data() + 3 * std::size_t{id}; };
   auto bad = [&](const std::string& why) { fail(InputErrorKind::BadPolygon, file, Location::line(f.line), "facet " + why); };
   std::vector<uint32_t> ids;
@@ -53,9 +56,16 @@ void triangulate_facet(const std::vector<double>& points, const Facet& f, const 
     has_polygon |= poly.size() >= 3;
   }
   if (!has_polygon) bad("has no polygon of 3 or more corners (sweepcdt constrains triangles only)");
-  if (f.polygons.size() == 1 && f.polygons[0].size() == 3 && f.holes.empty()) {
-    out.insert(out.end(), f.polygons[0].begin(), f.polygons[0].end());
-    return;
+  if (f.polygons.size() == 1 && f.holes.empty()) {
+    // One polygon: io's polygon triangulation (polygon.cpp: exact planarity, convex fan, ear
+    // clipping up to 256 vertices), much cheaper than a CDT per facet. Larger non-convex polygons
+    // go through the CDT below.
+    try {
+      add_polygon(soup, f.polygons[0], Location::line(f.line));
+      return;
+    } catch (const InputError& e) {
+      if (e.kind() != InputErrorKind::Unsupported) throw;
+    }
   }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
@@ -99,7 +109,7 @@ void triangulate_facet(const std::vector<double>& points, const Facet& f, const 
   for (const auto& s : segments) pslg.simplices.insert(pslg.simplices.end(), s.begin(), s.end());
   std::vector<std::array<double, 2>> holes;
   for (const auto& h : f.holes) holes.push_back(project(h.data()));
-  for (uint32_t t : triangles_of_pslg(pslg, holes, file, "facet at line " + std::to_string(f.line))) out.push_back(ids[t]);
+  for (uint32_t t : triangles_of_pslg(pslg, holes, file, "facet at line " + std::to_string(f.line))) soup.triangles.push_back(ids[t]);
 }
 
 // The domain of the facets with TetGen's meaning, as notations (see the file comment).
@@ -138,7 +148,10 @@ void notate(Plc<3>& plc, const std::vector<std::array<double, 3>>& holes, const 
     shell[t] = s;
     members[s].push_back(static_cast<uint32_t>(t));
   }
-  // Cells eaten by hole points: the innermost shell containing each.
+  // Cells eaten by hole points: the innermost shell containing each. Each hole costs a scan of the
+  // triangles; a file with very many of both is refused rather than left to run for minutes.
+  if (holes.size() * uint64_t{m} > (uint64_t{1} << 28))
+    fail(InputErrorKind::Unsupported, file, Location::none(), std::to_string(holes.size()) + " hole points in " + std::to_string(m) + " triangles is too many to locate");
   std::vector<uint8_t> eaten(report.shells.size(), 0);
   for (std::size_t h = 0; h < holes.size(); ++h) {
     const double* q = holes[h].data();
@@ -199,6 +212,9 @@ Plc<3> read_tetgen_poly(const std::string& bytes, const std::filesystem::path& f
   const uint64_t facets = static_cast<uint64_t>(in.to_integer(in.next_token(), "number of facets", 0, INT64_MAX));
   if (facets > in.bytes_left() / 6) in.fail(InputErrorKind::AbsurdCount, std::to_string(facets) + " facets announced, but only " + std::to_string(in.bytes_left()) + " bytes follow");
   const bool markers = in.to_integer(in.next_token(), "number of facet markers", 0, 1) == 1;
+  Soup soup;  // the facets' triangles, over the file's points
+  soup.file = name;
+  soup.points = std::move(plc.points);
   std::vector<std::string_view> line;
   for (uint64_t j = 0; j < facets; ++j) {
     Facet f;
@@ -233,10 +249,13 @@ Plc<3> read_tetgen_poly(const std::string& bytes, const std::filesystem::path& f
         f.holes.push_back({in.to_double(in.next_token(), "x"), in.to_double(in.next_token(), "y"), in.to_double(in.next_token(), "z")});
       }
     }
-    const std::size_t before = plc.num_simplices();
-    triangulate_facet(plc.points, f, name, plc.simplices);
-    plc.tags.insert(plc.tags.end(), plc.num_simplices() - before, f.tag);
+    const std::size_t before = soup.num_triangles();
+    triangulate_facet(soup, f);
+    plc.tags.insert(plc.tags.end(), soup.num_triangles() - before, f.tag);
   }
+
+  plc.points = std::move(soup.points);
+  plc.simplices = std::move(soup.triangles);
 
   std::vector<std::array<double, 3>> holes;
   const std::string_view hole_count = in.next_token();

@@ -155,6 +155,7 @@ VolumeMesh read_volume_mesh(const std::filesystem::path& file) {
   if (format == MeshFormat::TetGen) {
     const auto names = detail::tetgen_names(file);
     VolumeMesh mesh = detail::read_tetgen(names.node, names.ele, names.face);
+    detail::check_read(mesh, name);
     return mesh;
   }
   const std::string bytes = detail::read_file_bytes(file);

@@ -102,7 +102,7 @@ void entity_line(std::string& out, int64_t tag, const Entity& e, int64_t physica
   append_int(out, tag);
   for (double x : e.box) {
     out += ' ';
-    append_double(out, x);
+    append_double(out, e.elements.empty() ? 0.0 : x);  // an empty entity has no box
   }
   out += " 1 " + std::to_string(physical) + " 0\n";  // one physical tag, no bounding entities
 }
@@ -161,6 +161,8 @@ std::string gmsh_text(const VolumeMesh& m, bool v2) {
     e.elements.push_back(b);
     for (int k = 0; k < 3; ++k) e.grow(m, m.boundary[3 * b + k]);
   }
+  // Version 4.1 classifies every node on an entity: points without tetrahedra need a volume too.
+  if (!v2 && volumes.empty() && m.num_points() > 0) volumes[1];
   return v2 ? version2(m, volumes) : version41(m, volumes, surfaces);
 }
 

@@ -4,8 +4,8 @@
 
 #include <charconv>
 #include <cstring>
-#include <fstream>
 
+#include "file_io.h"
 #include "reader_util.h"
 
 namespace sweepcdt::io {
@@ -93,15 +93,8 @@ void write_surface(const std::filesystem::path& file, const Soup& soup, Format f
     case Format::StlBinary: bytes = stl_binary(soup); break;
     default: detail::fail(InputErrorKind::Unsupported, file.string(), Location::none(), std::string("writing ") + to_string(format));
   }
-  const std::filesystem::path temporary = file.string() + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out || !out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) || !out.flush())
-      detail::fail(InputErrorKind::Unreadable, file.string(), Location::none(), "cannot write the file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) detail::fail(InputErrorKind::Unreadable, file.string(), Location::none(), "cannot write the file: " + ec.message());
+  // A fresh temporary beside the target, removed on failure (file_io.h).
+  detail::write_files_atomically({{file, std::move(bytes)}}, file.string());
 }
 
 }  // namespace sweepcdt::io

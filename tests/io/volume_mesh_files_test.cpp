@@ -7,6 +7,7 @@
 
 #include "io_test_util.h"
 #include "sweepcdt/io/volume_mesh.h"
+#include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::io {
 namespace {
@@ -37,6 +38,36 @@ std::vector<std::string> listing(const std::filesystem::path& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// A triangulation built by hand (no neighbours: volume_mesh_of pairs them) over a convex-hull PLC
+// whose only constraints are two of the four faces: those carry their tags, the hull faces none.
+TEST(VolumeMeshOf, HandBuiltTriangulationWithoutNeighbours) {
+  Triangulation<3> tri;
+  tri.points = unit_tetrahedron().points;
+  tri.num_input_points = 4;
+  tri.simplices = unit_tetrahedron().tetrahedra;
+  ASSERT_EQ(predicates::orient<3>({tri.point(0), tri.point(1), tri.point(3), tri.point(2)}), predicates::Sign::Positive);
+  Plc<3> plc;
+  plc.points = tri.points;
+  plc.simplices = {2, 1, 0, 3, 0, 1};  // the faces z = 0 and y = 0, in any vertex order
+  plc.tags = {100, 101};
+  const VolumeMesh m = volume_mesh_of(tri, plc);
+  ASSERT_EQ(m.num_boundary(), 4u);
+  EXPECT_EQ(m.regions, std::vector<int32_t>{0});
+  int tagged = 0;
+  const double centre[3] = {0.25, 0.25, 0.25};
+  for (std::size_t b = 0; b < 4; ++b) {
+    const uint32_t* f = &m.boundary[3 * b];
+    // Counterclockwise seen from outside: the inside (the centre) is on the positive side.
+    EXPECT_EQ(predicates::orient<3>({&m.points[3 * f[0]], &m.points[3 * f[1]], &m.points[3 * f[2]], centre}), predicates::Sign::Positive) << b;
+    std::array<uint32_t, 3> sorted{f[0], f[1], f[2]};
+    std::sort(sorted.begin(), sorted.end());
+    const uint32_t expected = sorted == std::array<uint32_t, 3>{0, 1, 2} ? 100 : sorted == std::array<uint32_t, 3>{0, 1, 3} ? 101 : kNone;
+    EXPECT_EQ(m.boundary_tags[b], expected) << b;
+    tagged += expected != kNone;
+  }
+  EXPECT_EQ(tagged, 2);
 }
 
 const MeshFormat kAll[] = {MeshFormat::Medit, MeshFormat::Vtu, MeshFormat::Gmsh41, MeshFormat::Gmsh22, MeshFormat::TetGen, MeshFormat::Abaqus};
@@ -138,6 +169,13 @@ TEST(VolumeMeshWrite, UntaggedBoundaryAndEmptyMeshRoundTrip) {
     const VolumeMesh back = read_volume_mesh(file);
     EXPECT_EQ(back.regions, m.regions);
     if (f != MeshFormat::Abaqus) EXPECT_EQ(back.boundary_tags, m.boundary_tags);
+    // Points without tetrahedra (gmsh 4.1 then needs a volume entity for them) and nothing at all.
+    VolumeMesh points_only;
+    points_only.points = m.points;
+    points_only.num_input_points = 4;
+    const auto points_file = name("p");
+    write_volume_mesh(points_file, points_only, f);
+    EXPECT_EQ(read_volume_mesh(points_file).points, m.points);
     const auto empty_file = name("e");
     write_volume_mesh(empty_file, VolumeMesh{}, f);
     const VolumeMesh empty = read_volume_mesh(empty_file);

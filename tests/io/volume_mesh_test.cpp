@@ -191,35 +191,37 @@ TEST(VolumeMeshFiles, OwnReaderReadsBackExactly) {
 // boundary triangles enclose.
 const char* kMeshioScript = R"PY(
 import sys, meshio, numpy as np
-path, fmt = sys.argv[1], sys.argv[2]
-m = meshio.read(path, file_format=fmt)
-P = np.asarray(m.points, dtype=float)
-T = np.concatenate([c.data for c in m.cells if c.type == "tetra"] or [np.zeros((0, 4), int)])
-F = np.concatenate([c.data for c in m.cells if c.type == "triangle"] or [np.zeros((0, 3), int)])
-a, b, c, d = (P[T[:, k]] for k in range(4))
-vol = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a) / 6
-bvol = np.einsum("ij,ij->i", P[F[:, 0]], np.cross(P[F[:, 1]], P[F[:, 2]])).sum() / 6
-regions = {}
-for key in ("region", "medit:ref", "gmsh:physical", "tetgen:ref"):
-    if key in m.cell_data:
-        for blk, data in zip(m.cells, m.cell_data[key]):
-            if blk.type == "tetra":
-                for r in np.asarray(data).ravel():
-                    regions[int(r)] = regions.get(int(r), 0) + 1
-        break
-else:
-    for name, sets in m.cell_sets.items():
-        if name.upper().startswith("REGION"):
-            regions[int(name[6:])] = sum(len(s) for s, blk in zip(sets, m.cells) if blk.type == "tetra")
-print("points", len(P), "tetra", len(T), "triangles", len(F), "minvol", repr(float(vol.min())),
-      "volume", repr(float(vol.sum())), "bvolume", repr(float(bvol)),
-      "regions", ",".join("%d:%d" % kv for kv in sorted(regions.items())))
+for path, fmt in zip(sys.argv[1::2], sys.argv[2::2]):  # one interpreter for every file: meshio loads slowly
+    m = meshio.read(path, file_format=fmt)
+    P = np.asarray(m.points, dtype=float)
+    T = np.concatenate([c.data for c in m.cells if c.type == "tetra"] or [np.zeros((0, 4), int)])
+    F = np.concatenate([c.data for c in m.cells if c.type == "triangle"] or [np.zeros((0, 3), int)])
+    a, b, c, d = (P[T[:, k]] for k in range(4))
+    vol = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a) / 6
+    bvol = np.einsum("ij,ij->i", P[F[:, 0]], np.cross(P[F[:, 1]], P[F[:, 2]])).sum() / 6
+    regions = {}
+    for key in ("region", "medit:ref", "gmsh:physical", "tetgen:ref"):
+        if key in m.cell_data:
+            for blk, data in zip(m.cells, m.cell_data[key]):
+                if blk.type == "tetra":
+                    for r in np.asarray(data).ravel():
+                        regions[int(r)] = regions.get(int(r), 0) + 1
+            break
+    else:
+        for name, sets in m.cell_sets.items():
+            if name.upper().startswith("REGION"):
+                regions[int(name[6:])] = sum(len(s) for s, blk in zip(sets, m.cells) if blk.type == "tetra")
+    print("file", path, "points", len(P), "tetra", len(T), "triangles", len(F), "minvol", repr(float(vol.min())),
+          "volume", repr(float(vol.sum())), "bvolume", repr(float(bvol)),
+          "regions", ",".join("%d:%d" % kv for kv in sorted(regions.items())), flush=True)
 )PY";
 
-std::map<std::string, std::string> words(const std::string& output) {
+// The "key value" pairs of the script's line about `file`.
+std::map<std::string, std::string> words(const std::string& output, const std::filesystem::path& file) {
   std::map<std::string, std::string> out;
-  const std::string last = output.substr(output.rfind("points ") == std::string::npos ? 0 : output.rfind("points "));
-  std::istringstream in(last);
+  const auto at = output.find("file " + file.string() + " ");
+  if (at == std::string::npos) return out;
+  std::istringstream in(output.substr(at, output.find('\n', at) - at));
   std::string key, value;
   while (in >> key >> value) out[key] = value;
   return out;
@@ -238,25 +240,32 @@ TEST(VolumeMeshFiles, MeshioReadsEveryFormat) {
   if (!testing::require_meshio()) return;
   TempDir dir;
   const auto script = dir.write("check.py", kMeshioScript);
-  for (const Case& c : cases())
+  std::string command = "/usr/bin/python3 " + quoted(script);
+  auto file_of = [&](std::size_t k, const FormatCase& f) { return dir.path() / (std::to_string(k) + "_" + f.file); };
+  for (std::size_t k = 0; k < cases().size(); ++k)
     for (const FormatCase& f : kFormats) {
+      write_volume_mesh(file_of(k, f), cases()[k].mesh, f.format);
+      command += " " + quoted(file_of(k, f)) + " " + f.meshio;
+    }
+  const auto run = run_tool(command);
+  ASSERT_EQ(run.status, 0) << run.output;
+  for (std::size_t k = 0; k < cases().size(); ++k)
+    for (const FormatCase& f : kFormats) {
+      const Case& c = cases()[k];
       SCOPED_TRACE(c.name + " as " + to_string(f.format));
-      const auto file = dir.path() / f.file;
-      write_volume_mesh(file, c.mesh, f.format);
-      const auto run = run_tool("/usr/bin/python3 " + quoted(script) + " " + quoted(file) + " " + f.meshio);
-      ASSERT_EQ(run.status, 0) << run.output;
-      auto w = words(run.output);
+      auto w = words(run.output, file_of(k, f));
+      ASSERT_FALSE(w.empty()) << run.output;
       const double exact = c.six_volume.get_d() / 6;
-      EXPECT_EQ(w["points"], std::to_string(c.mesh.num_points())) << run.output;
-      EXPECT_EQ(w["tetra"], std::to_string(c.mesh.num_tetrahedra())) << run.output;
-      EXPECT_GT(std::stod(w["minvol"]), 0) << "an inverted tetrahedron: " << run.output;
-      EXPECT_NEAR(std::stod(w["volume"]), exact, 1e-12 * std::abs(exact)) << run.output;
+      EXPECT_EQ(w["points"], std::to_string(c.mesh.num_points()));
+      EXPECT_EQ(w["tetra"], std::to_string(c.mesh.num_tetrahedra()));
+      EXPECT_GT(std::stod(w["minvol"]), 0) << "an inverted tetrahedron";
+      EXPECT_NEAR(std::stod(w["volume"]), exact, 1e-12 * std::abs(exact));
       // .inp holds the boundary as element faces, not triangles; meshio's TetGen reader skips .face.
       if (f.format != MeshFormat::Abaqus && f.format != MeshFormat::TetGen) {
-        EXPECT_EQ(w["triangles"], std::to_string(c.mesh.num_boundary())) << run.output;
-        EXPECT_NEAR(std::stod(w["bvolume"]), exact, 1e-12 * std::abs(exact)) << "boundary not outward: " << run.output;
+        EXPECT_EQ(w["triangles"], std::to_string(c.mesh.num_boundary()));
+        EXPECT_NEAR(std::stod(w["bvolume"]), exact, 1e-12 * std::abs(exact)) << "boundary not outward";
       }
-      EXPECT_EQ(w["regions"], region_counts(c.mesh)) << run.output;
+      EXPECT_EQ(w["regions"], region_counts(c.mesh));
     }
 }
 

@@ -47,7 +47,8 @@ enum class MeshFormat : uint8_t {
 };
 
 const char* to_string(MeshFormat format);  // "mesh", "vtu", "msh", "msh22", "tetgen", "inp"
-// From a --format word (the to_string names; also "msh41", "node", "ele") or nullopt.
+// From a --format word (the to_string names; also "msh41", "node", "ele", "medit", "abaqus",
+// "calculix"; any case) or nullopt.
 std::optional<MeshFormat> mesh_format_named(const std::string& word);
 // From the file name's extension, or nullopt.
 std::optional<MeshFormat> mesh_format_of(const std::filesystem::path& file);
