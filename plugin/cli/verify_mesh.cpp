@@ -86,7 +86,10 @@ void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Facet, std::
                          MeshVerification& v) {
   v.file_boundary = mesh.num_boundary() > 0;
   if (!v.file_boundary) return;
-  const bool tagged = mesh.boundary_tags.size() == mesh.num_boundary();
+  // Formats without face tags (Abaqus) give kNone: nothing to compare.
+  const bool tagged = mesh.boundary_tags.size() == mesh.num_boundary() &&
+                      std::any_of(mesh.boundary_tags.begin(), mesh.boundary_tags.end(), [](uint32_t t) { return t != kNone; });
+  v.file_tags = tagged;
   std::size_t listed = 0;
   for (std::size_t k = 0; k < mesh.num_boundary(); ++k) {
     const Facet g{mesh.boundary[3 * k], mesh.boundary[3 * k + 1], mesh.boundary[3 * k + 2]};
