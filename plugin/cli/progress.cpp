@@ -3,6 +3,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 
 #include <unistd.h>
@@ -32,7 +33,11 @@ void throw_if_interrupted() {
   if (interrupted()) throw CancelledError();
 }
 
-Console::Console(std::ostream& err, bool quiet) : err_(err), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0) {}
+// A terminal that cannot move the cursor (TERM=dumb, e.g. an editor's shell buffer) gets log lines.
+Console::Console(std::ostream& err, bool quiet) : err_(err), quiet_(quiet) {
+  const char* term = std::getenv("TERM");
+  terminal_ = ::isatty(STDERR_FILENO) != 0 && !(term && std::string(term) == "dumb");
+}
 
 void Console::clear_bar_locked() {
   if (bar_shown_) err_ << "\r\033[K";

@@ -3,6 +3,7 @@
 // for the dimension) with their exit codes.
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "sweepcdt/io/volume_mesh.h"
@@ -84,9 +85,19 @@ TEST(CliCdt, ThreeDimensionalPoly) {
 TEST(CliCdt, FourDimensionalPlc) {
   TempDir dir;
   const auto plc = dir.write("s.plc", "plc 4\npoints 6\n0 0 0 0\n8 0 0 0\n0 8 0 0\n0 0 8 0\n0 0 0 8\n1 1 1 1\nsimplices 1\n0 1 2 3\n");
-  const CliRun r = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.simplices") + " --check", dir);
+  const auto stats = dir.path() / "stats.json";
+  const CliRun r = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.simplices") + " --check --stats " + quoted(stats), dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(r.says("4D, 5 simplices, checked")) << r.out;
+  const auto json = nlohmann::json::parse(bytes_of(stats));
+  EXPECT_EQ(json["command"], "cdt");
+  EXPECT_EQ(json["steiner"], "none");
+  EXPECT_EQ(json["files"][0]["dimension"], 4);
+  EXPECT_EQ(json["files"][0]["input_vertices"], 6);
+  EXPECT_EQ(json["files"][0]["input_simplices"], 1);
+  EXPECT_EQ(json["files"][0]["simplices"], 5);
+  EXPECT_EQ(json["files"][0]["outputs"][0]["format"], "simplices");
+  EXPECT_EQ(json["files"][0]["validated"], true);
   std::ifstream in(dir.path() / "s.simplices");
   std::string word;
   std::size_t d = 0, n = 0, input = 0, s = 0;
@@ -97,6 +108,7 @@ TEST(CliCdt, FourDimensionalPlc) {
   in >> word >> s;
   EXPECT_EQ(word, "simplices");
   EXPECT_EQ(s, 5u);
+  fs::remove(stats);
   const CliRun node = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.node"), dir);
   EXPECT_EQ(node.exit_code, 2) << node.out;
   EXPECT_TRUE(node.says("use .simplices")) << node.out;
