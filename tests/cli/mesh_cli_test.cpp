@@ -1,24 +1,17 @@
 // `sweepcdt INPUT -o OUTPUT`: the shared meshes in every output format (each output verified with
 // `sweepcdt check`, which reads it back), the documented failures (exit 3 bad input, 4 no CDT,
-// 5 unwritable output) leaving no file behind, --stats, and Ctrl-C.
+// 5 unwritable output) leaving no file behind, --stats.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <optional>
-#include <thread>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <unistd.h>
 
 #include "cli_run.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "test_shapes.h"
-
-extern char** environ;
 
 namespace sweepcdt::cli::testing {
 namespace {
@@ -267,64 +260,6 @@ TEST(CliMesh, StatsAreJsonWithCountsAndTimes) {
   EXPECT_EQ(failure["files"][0]["status"], "bad-input");
   EXPECT_NE(failure["files"][0]["message"].get<std::string>().find("boundary-edge"), std::string::npos);
   EXPECT_FALSE(failure["files"][0].contains("tetrahedra"));
-}
-
-// Runs sweepcdt with `words`, stderr to `log`, and sends SIGINT after `delay`. The exit status, and
-// how long the process took to end after the signal.
-std::pair<int, double> run_and_interrupt(std::vector<std::string> words, const std::string& log, std::chrono::milliseconds delay) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  words.insert(words.begin(), SWEEPCDT_CLI);
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, SWEEPCDT_CLI, &actions, nullptr, argv.data(), environ) != 0) return {-1, 0};
-  posix_spawn_file_actions_destroy(&actions);
-  std::this_thread::sleep_for(delay);
-  ::kill(pid, SIGINT);
-  const auto sent = std::chrono::steady_clock::now();
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return {status, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count()};
-}
-
-// Ctrl-C during a long run (gift-wrapping the knot takes minutes): exit 130, a message, no output.
-TEST(CliMesh, CtrlCCancelsCleanly) {
-  SWEEPCDT_REQUIRE_SHARED_DATA();
-  TempDir dir;
-  const std::string input = (shared_data() / "drc/knot1.drc").string();
-  const std::string log = (dir.path() / ".log").string();
-  const auto [status, seconds] =
-      run_and_interrupt({input, "-o", (dir.path() / "knot1.mesh").string(), "--algorithm", "giftwrap"}, log, std::chrono::milliseconds(1500));
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
-  EXPECT_LT(seconds, 10.0) << "cancellation took too long";
-  EXPECT_NE(bytes_of(log).find(input + ": cancelled (Ctrl-C): nothing written"), std::string::npos) << bytes_of(log);
-  EXPECT_TRUE(files_in(dir.path()).empty());
-}
-
-// In a batch: the files in progress stop, the rest never start, nothing is written, and --stats
-// still records what happened.
-TEST(CliMesh, CtrlCCancelsABatch) {
-  SWEEPCDT_REQUIRE_SHARED_DATA();
-  TempDir dir;
-  const auto out = dir.path() / "out";
-  const std::string log = (dir.path() / ".log").string();
-  const auto [status, seconds] = run_and_interrupt(
-      {"mesh", (shared_data() / "drc/knot1.drc").string(), (shared_data() / "glb/moon.glb").string(),
-       (shared_data() / "off/icosahedron.off").string(), "--out-dir", out.string(), "--threads", "2", "--algorithm", "giftwrap",
-       "--stats", (dir.path() / "stats.json").string()},
-      log, std::chrono::milliseconds(1500));
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
-  EXPECT_LT(seconds, 10.0) << "cancellation took too long";
-  EXPECT_NE(bytes_of(log).find("1 files not started"), std::string::npos) << bytes_of(log);
-  EXPECT_TRUE(files_in(out).empty());
-  const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "stats.json"));
-  EXPECT_EQ(stats["exit_code"], 130);
-  for (const auto& f : stats["files"]) EXPECT_EQ(f["status"], "cancelled") << f;
 }
 
 }  // namespace
