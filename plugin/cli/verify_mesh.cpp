@@ -21,7 +21,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 #include "sweepcdt/predicates.h"
@@ -74,6 +76,55 @@ struct OnTriangle {
 };
 
 using Facet = std::array<uint32_t, 3>;
+
+// The input triangles whose closed bounding box holds a point (a midpoint of two points of a
+// triangle stays in its box, rounding included: rounding is monotone). A uniform grid of about one
+// cell per triangle, so that checking many Steiner points is not O(points x triangles).
+class TriangleGrid {
+ public:
+  explicit TriangleGrid(const Plc<3>& plc) : box_(plc.num_simplices()) {
+    lo_.fill(std::numeric_limits<double>::infinity());
+    std::array<double, 3> hi;
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t j = 0; j < box_.size(); ++j)
+      for (int c = 0; c < 3; ++c) {
+        const double a = plc.point(plc.simplex(j)[0])[c], b = plc.point(plc.simplex(j)[1])[c], d = plc.point(plc.simplex(j)[2])[c];
+        box_[j][c] = std::min({a, b, d});
+        box_[j][3 + c] = std::max({a, b, d});
+        lo_[c] = std::min(lo_[c], box_[j][c]);
+        hi[c] = std::max(hi[c], box_[j][3 + c]);
+      }
+    cells_ = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(box_.size()))));
+    for (int c = 0; c < 3; ++c) scale_[c] = hi[c] > lo_[c] ? cells_ / (hi[c] - lo_[c]) : 0.0;
+    grid_.resize(std::size_t(cells_) * cells_ * cells_);
+    for (uint32_t j = 0; j < box_.size(); ++j) {
+      std::array<int, 3> a, b;
+      for (int c = 0; c < 3; ++c) a[c] = cell(c, box_[j][c]), b[c] = cell(c, box_[j][3 + c]);
+      for (int x = a[0]; x <= b[0]; ++x)
+        for (int y = a[1]; y <= b[1]; ++y)
+          for (int z = a[2]; z <= b[2]; ++z) grid_[index(x, y, z)].push_back(j);  // ascending j in every cell
+    }
+  }
+  const std::vector<uint32_t>& near(const double* p) const { return grid_[index(cell(0, p[0]), cell(1, p[1]), cell(2, p[2]))]; }
+  bool box_holds(uint32_t j, const double* p) const {
+    for (int c = 0; c < 3; ++c)
+      if (p[c] < box_[j][c] || p[c] > box_[j][3 + c]) return false;
+    return true;
+  }
+
+ private:
+  // Monotone in x, so a box holding p overlaps p's cell.
+  int cell(int c, double x) const {
+    const double f = std::floor((x - lo_[c]) * scale_[c]);
+    return f < 0 ? 0 : f >= cells_ ? cells_ - 1 : static_cast<int>(f);
+  }
+  std::size_t index(int x, int y, int z) const { return (std::size_t(x) * cells_ + y) * cells_ + z; }
+
+  std::vector<std::array<double, 6>> box_;
+  std::array<double, 3> lo_, scale_;
+  int cells_ = 1;
+  std::vector<std::vector<uint32_t>> grid_;
+};
 
 bool same_rotation(const Facet& a, const Facet& b) {
   return a == b || a == Facet{b[1], b[2], b[0]} || a == Facet{b[2], b[0], b[1]};
@@ -145,17 +196,11 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       on[j].push_back({p, static_cast<uint8_t>((1u << k) | (1u << ((k + 2) % 3)))});
       triangles_of[p].push_back(j);
     }
-  std::vector<std::array<double, 6>> box(m);  // closed bounding boxes: a midpoint stays in its triangle's
-  for (uint32_t j = 0; j < m; ++j)
-    for (int c = 0; c < 3; ++c) {
-      const double a = input.point(input.simplex(j)[0])[c], b = input.point(input.simplex(j)[1])[c], d = input.point(input.simplex(j)[2])[c];
-      box[j][c] = std::min({a, b, d});
-      box[j][3 + c] = std::max({a, b, d});
-    }
+  const TriangleGrid grid(input);
   for (uint32_t s = static_cast<uint32_t>(n); s < total; ++s) {
     const double* ps = mesh.points.data() + 3 * std::size_t{s};
-    for (uint32_t j = 0; j < m; ++j) {
-      if (ps[0] < box[j][0] || ps[1] < box[j][1] || ps[2] < box[j][2] || ps[0] > box[j][3] || ps[1] > box[j][4] || ps[2] > box[j][5]) continue;
+    for (const uint32_t j : grid.near(ps)) {
+      if (!grid.box_holds(j, ps)) continue;
       const auto& known = on[j];
       bool found = false;
       uint8_t edges = 0;
