@@ -12,7 +12,8 @@
 //    must have all three vertices on one input triangle (2.), with the tetrahedron on the side that
 //    the input's exterior notation says is inside, and every input triangle must be covered by as
 //    many such facets as a triangulation of it with its points has (b + 2i - 2: b points on its
-//    edges, i inside). Without Steiner points the input PLC itself is used instead: exact.
+//    edges, i inside), forming one patch bounded by its edges. Without Steiner points the input PLC
+//    itself is used for validate() instead: exact.
 //    The file's own boundary triangles (what solvers read) must be exactly these facets, oriented
 //    outward, tagged with their input triangle.
 // 4. validate() of the tetrahedra against that PLC: topology, orientation, every constraint a
@@ -125,6 +126,32 @@ class TriangleGrid {
   int cells_ = 1;
   std::vector<std::vector<uint32_t>> grid_;
 };
+
+// 3a. The pieces of each input triangle form one patch: every edge inside the patch is shared by
+// exactly two pieces, and every edge of one piece only runs along an edge of the triangle (both
+// ends on that edge). With the counts of 3, this makes the patch a triangulated disc bounded by
+// the triangle's edges: the triangle is covered, without gaps or folds.
+void check_patches(const std::map<Facet, std::pair<Facet, uint32_t>>& on_input, const std::vector<std::vector<OnTriangle>>& on,
+                   const Plc<3>& input, Problems& problems) {
+  std::vector<std::array<uint32_t, 3>> edges;  // (input triangle, smaller id, larger id)
+  for (const auto& [key, entry] : on_input)
+    for (int k = 0; k < 3; ++k) edges.push_back({entry.second, std::min(key[k], key[(k + 1) % 3]), std::max(key[k], key[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  const auto edge_bits = [&](uint32_t j, uint32_t point) {
+    for (const OnTriangle& p : on[j])
+      if (p.point == point) return p.edges;
+    return uint8_t{0};
+  };
+  for (std::size_t a = 0, b; a < edges.size(); a = b) {
+    for (b = a + 1; b < edges.size() && edges[b] == edges[a]; ++b) {
+    }
+    const auto [j, p, q] = edges[a];
+    const std::string name = "edge (" + std::to_string(p) + " " + std::to_string(q) + ") of the pieces of input triangle " + std::to_string(j) +
+                             " (" + ids_text(input.simplex(j), 3) + ")";
+    if (b - a > 2) problems.add(name + " is shared by " + std::to_string(b - a) + " of them");
+    if (b - a == 1 && (edge_bits(j, p) & edge_bits(j, q)) == 0) problems.add(name + " bounds the patch but does not run along an edge of the triangle");
+  }
+}
 
 bool same_rotation(const Facet& a, const Facet& b) {
   return a == b || a == Facet{b[1], b[2], b[0]} || a == Facet{b[2], b[0], b[1]};
@@ -280,6 +307,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       problems.add("input triangle " + std::to_string(j) + " (" + ids_text(input.simplex(j), 3) + ") is covered by " + std::to_string(pieces[j]) +
                    " boundary triangles; a triangulation of it with its " + std::to_string(b + i) + " points has " + std::to_string(expected));
   }
+  check_patches(on_input, on, input, problems);
   check_file_boundary(mesh, on_input, problems, v);
   if (!v.ok()) return v;
 
