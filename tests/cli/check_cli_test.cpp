@@ -5,9 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "sweepcdt/io/volume_mesh.h"
+#include "surface_builders.h"
+#include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/predicates.h"
 #include "test_shapes.h"
 
@@ -157,6 +160,27 @@ TEST(CliCheck, SteinerPointsMustBeTheMidpointsCdtMakes) {
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
   EXPECT_TRUE(r.says("is not the midpoint of two points on one input triangle")) << r.out;
+}
+
+// Nested shells: a box with a box-shaped cavity (given outward: the importer reverses it) and a
+// body inside the cavity. Two regions, boundary triangles facing both ways; check must accept it.
+TEST(CliCheck, CavityAndNestedBody) {
+  TempDir dir;
+  io::Soup soup;
+  io::testing::add_box(soup, {0, 0, 0}, {12, 11, 10});
+  io::testing::add_box(soup, {2, 3, 2}, {9, 8, 7});
+  io::testing::add_box(soup, {4, 5, 3}, {6, 6, 5});
+  const auto input = dir.path() / "nested.stl";
+  io::write_surface(input, soup, io::Format::StlBinary);
+  const auto output = dir.path() / "nested.msh";
+  const CliRun r = run(quoted(input) + " -o " + quoted(output) + " --stats " + quoted(dir.path() / "s.json"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const CliRun ok = check(input, output, dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "s.json"))["files"][0];
+  EXPECT_EQ(stats["input_triangles"], 36);
+  EXPECT_EQ(stats["regions"], 2) << "the shell between box and cavity, and the body inside";
+  EXPECT_TRUE(ok.says("valid: input vertices identical; " + std::to_string(stats["boundary_triangles"].get<int>()) + " boundary triangles")) << ok.out;
 }
 
 }  // namespace
