@@ -86,6 +86,9 @@ Eaten eat(const Plc<2>& pslg, const std::vector<std::array<double, 2>>& holes, c
 }  // namespace
 
 void notate_from_holes(Plc<2>& plc, const std::vector<std::array<double, 2>>& holes, const std::string& file) {
+  // No segments and no holes: a plain point set, whose triangulation is its convex hull (eating from
+  // the hull would leave nothing; Triangle users expect the Delaunay triangulation).
+  if (plc.num_simplices() == 0 && holes.empty()) return;
   const Eaten e = eat(plc, holes, file, "the PSLG");
   // Per segment: is its positive (left of f0 -> f1) / negative side eaten? A side with no triangle is
   // outside the convex hull: eaten.

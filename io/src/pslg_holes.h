@@ -16,7 +16,8 @@ namespace sweepcdt::io::detail {
 //   positive side eaten only -> Positive, negative side only -> Negative, neither -> None,
 //   both (a segment inside a hole or outside the outer boundary) -> the segment is dropped, as
 //   Triangle drops it (tags keep the input numbering).
-// Hole points outside the convex hull are ignored (as Triangle does); a hole point on a segment is an
+// A PSLG without segments and holes keeps the convex hull as domain. Hole points outside the convex
+// hull are ignored (as Triangle does); a hole point on a segment is an
 // InputError. So is a PSLG that is not one (crossing segments, ...: core's PlcError, rephrased) and a
 // domain the holes eat entirely.
 void notate_from_holes(Plc<2>& plc, const std::vector<std::array<double, 2>>& holes, const std::string& file);

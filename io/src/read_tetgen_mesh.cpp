@@ -2,6 +2,8 @@
 // TetGen allows); .ele: 4 or 10 nodes per tetrahedron (corners first), the first attribute is the
 // region (r + 1, as written); .face (optional: no .face, no boundary): the marker is the boundary tag
 // + 1. Elements keep the order of the files.
+#include <cmath>
+
 #include "volume_mesh_formats.h"
 
 namespace sweepcdt::io::detail {
@@ -58,7 +60,7 @@ VolumeMesh read_tetgen(const std::filesystem::path& node, const std::filesystem:
       for (int64_t a = 0; a < attributes; ++a) {
         const double x = in.to_double(in.next_token(), "an attribute");
         if (a > 0) continue;
-        if (x != static_cast<double>(static_cast<int64_t>(x)) || x < 0 || x > INT32_MAX) in.fail(InputErrorKind::Syntax, "the region attribute must be an integer >= 0");
+        if (!(x >= 0 && x <= INT32_MAX) || x != std::floor(x)) in.fail(InputErrorKind::Syntax, "the region attribute must be a whole number in [0, 2^31 - 1]");
         region = region_from_file(in, static_cast<int64_t>(x));
       }
       for (uint32_t id : file_order(v)) m.tetrahedra.push_back(id);

@@ -25,6 +25,7 @@ class Vtu {
   }
   // The value of attribute `name` inside the tag starting at `tag` (up to its '>'), or nullopt.
   std::optional<std::string_view> attribute(std::size_t tag, std::string_view name) const {
+    if (tag >= text_.size()) return std::nullopt;  // no such tag
     const std::size_t end = text_.find('>', tag);
     const std::string_view t = text_.substr(tag, end == std::string_view::npos ? std::string_view::npos : end - tag);
     for (std::size_t p = t.find(name); p != std::string_view::npos; p = t.find(name, p + 1)) {

@@ -128,9 +128,11 @@ std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volu
     }
   }
   out += "$EndNodes\n$Elements\n";
-  line(out, {static_cast<int64_t>(volumes.size() + surfaces.size()), static_cast<int64_t>(t + b), t + b ? 1 : 0,
-             static_cast<int64_t>(t + b)});
+  // Blocks only for entities with elements (an empty volume holds the nodes of a mesh without any).
+  const auto nonempty = std::count_if(volumes.begin(), volumes.end(), [](const auto& v) { return !v.second.elements.empty(); });
+  line(out, {static_cast<int64_t>(nonempty + surfaces.size()), static_cast<int64_t>(t + b), t + b ? 1 : 0, static_cast<int64_t>(t + b)});
   for (const auto& [tag, e] : volumes) {
+    if (e.elements.empty()) continue;
     line(out, {3, tag, 4, static_cast<int64_t>(e.elements.size())});
     for (std::size_t k : e.elements) {
       append_int(out, static_cast<int64_t>(k) + 1);

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(off stl_ascii stl_binary obj ply gltf glb draco)
+((${#targets[@]})) || targets=(off stl_ascii stl_binary obj ply gltf glb draco medit vtu gmsh inp plc)
 
 sanitizers="-fsanitize=address,undefined -fsanitize=fuzzer-no-link"
 # Undefined behaviour is fatal except for the known cases listed in ubsan.supp.
@@ -35,6 +35,9 @@ mkdir -p build-fuzz/corpus/obj build-fuzz/corpus/ply
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > build-fuzz/corpus/obj/tetra.obj
 printf 'v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nf 1/1/1 2//1 3 4 5 -1\n' > build-fuzz/corpus/obj/l.obj
 printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > build-fuzz/corpus/ply/tetra.ply
+
+# Volume meshes and .plc: small files written by sweepcdt itself (tests/fuzz/seeds/).
+for t in medit vtu gmsh inp plc; do seed "$t" tests/fuzz/seeds/"$t"/*; done
 
 for t in "${targets[@]}"; do
   mkdir -p "build-fuzz/crashes/$t"

@@ -158,6 +158,13 @@ TEST(TrianglePoly, ConcavityEatenNodeFileAndRegions) {
   EXPECT_EQ(regions, (std::set<int32_t>{4, 9}));
 }
 
+TEST(TrianglePoly, PointSetIsItsConvexHull) {
+  TempDir dir;
+  const Plc<2> plc = read_as<2>(dir.write("pts.poly", "4 2 0 0\n1 0 0\n2 2 0\n3 0 2\n4 1 1\n0 0\n0\n"));
+  EXPECT_TRUE(plc.exterior.empty());
+  EXPECT_EQ(twice_area(checked_cdt(plc)), 4);
+}
+
 TEST(TrianglePoly, MalformedFilesNameTheLine) {
   TempDir dir;
   expect_error(dir, "a.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 4\n", InputErrorKind::IndexOutOfRange, "a.poly:6:");

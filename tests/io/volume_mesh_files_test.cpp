@@ -234,6 +234,14 @@ TEST(VolumeMeshRead, MalformedVtu) {
                InputErrorKind::IndexOutOfRange, ":9:");
 }
 
+// Found by fuzz_vtu: no <VTKFile> tag made the compressor lookup read past the end (an exception
+// that was no InputError).
+TEST(VolumeMeshRead, VtuWithoutVtkFileTag) {
+  TempDir dir;
+  expect_error(dir, "a.vtu", "<?xml version=\"1.0\"?>\n<VTKFil[ type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n<Piece Numb NumberOfCells=\"5\">\n",
+               InputErrorKind::Syntax, ":4:");
+}
+
 TEST(VolumeMeshRead, MalformedTetgenAndAbaqus) {
   TempDir dir;
   dir.write("t.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
@@ -241,6 +249,7 @@ TEST(VolumeMeshRead, MalformedTetgenAndAbaqus) {
   expect_error(dir, "t.ele", "1 4 1\n1 1 2 3 5 1\n", InputErrorKind::IndexOutOfRange, "t.ele:2:");
   expect_error(dir, "t.ele", "1 4 1\n1 0 1 2 3 1\n", InputErrorKind::IndexOutOfRange, "t.ele:2:");  // 1-based ids
   expect_error(dir, "t.ele", "70000000 4 0\n", InputErrorKind::AbsurdCount, "t.ele:1:");
+  expect_error(dir, "t.ele", "1 4 1\n1 1 2 3 4 1e300\n", InputErrorKind::Syntax, "t.ele:2:");  // region attribute
   expect_error(dir, "t.node", "1 2 0 0\n1 0 0\n", InputErrorKind::Unsupported, "t.node:1:");
   expect_error(dir, "a.inp", "*NODE\n1, 0, 0, 0\n*ELEMENT, TYPE=C3D8\n", InputErrorKind::Unsupported, ":3:");
   expect_error(dir, "b.inp", "*NODE\n1, 0, 0, 0\n*ELEMENT, TYPE=C3D4\n1, 1, 1, 1, 2\n", InputErrorKind::IndexOutOfRange, ":4:");
