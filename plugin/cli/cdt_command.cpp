@@ -96,6 +96,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
       r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
       io::write_volume_mesh(output, mesh, *format.volume);
       r.seconds_write = since(t);
+      if (*format.volume == io::MeshFormat::Abaqus) warn_if_rounded(output, mesh, r);
       return;
     }
   }
@@ -163,6 +164,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
   r.seconds_total = since(start);
   if (r.code == kOk) {
     console.info(input + " -> " + output + ": " + std::to_string(r.dimension) + "D, " + summary_of(r));
+    for (const auto& w : r.warnings) console.line("sweepcdt: warning: " + w);
   } else {
     console.line("sweepcdt: " + r.message);
     if (!options.quiet)

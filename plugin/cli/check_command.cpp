@@ -71,6 +71,9 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
   }
   if (!quiet)
     out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the input triangles, covering them;\n"
+        << (!v.file_boundary ? "       (the file lists no boundary triangles);\n"
+            : v.file_tags    ? "       the file's boundary triangles are those, oriented outward, tagged with their input triangle;\n"
+                             : "       the file's boundary triangles are those, oriented outward (the format has no tags);\n")
         << "       validate(): topology, orientation, constraints, domain, every interior facet locally Delaunay\n";
   return kOk;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <cstdio>
 #include <set>
@@ -93,12 +94,32 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     const auto t = std::chrono::steady_clock::now();
     for (; written < targets.size(); ++written) io::write_volume_mesh(targets[written].file, mesh, targets[written].format);
     r.seconds_write = since(t);
+    for (const MeshTarget& target : targets)
+      if (target.format == io::MeshFormat::Abaqus) warn_if_rounded(target.file, mesh, r);
   } catch (...) {
     fail(r, describe_current_exception(input, writing));
     for (std::size_t k = 0; k < written; ++k) remove_mesh_files(targets[k]);
   }
   r.seconds_total = since(start);
   return r;
+}
+
+// Abaqus .inp holds coordinates in CalculiX's 20-character fields, so io rounds the ones that do not
+// fit: the file is then not exactly the CDT. Reading it back is cheap next to the CDT, and tells.
+void warn_if_rounded(const std::string& file, const io::VolumeMesh& mesh, FileResult& r) {
+  const io::VolumeMesh back = io::read_volume_mesh(file);
+  std::size_t rounded = 0;
+  double largest = 0;
+  for (std::size_t k = 0; k < mesh.points.size() && k < back.points.size(); ++k)
+    if (back.points[k] != mesh.points[k]) {
+      ++rounded;
+      largest = std::max(largest, std::abs(back.points[k] - mesh.points[k]));
+    }
+  if (rounded == 0) return;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", largest);
+  r.warnings.push_back(file + ": " + std::to_string(rounded) + " coordinates rounded to fit CalculiX's 20-character fields (by up to " + buf +
+                       "): the file is not exactly the CDT; use .mesh, .vtu, .msh or .node for exact coordinates");
 }
 
 std::string summary_of(const FileResult& r) {

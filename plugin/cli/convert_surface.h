@@ -23,6 +23,9 @@ struct MeshTarget {
 FileResult convert_surface(const std::string& input, const std::vector<MeshTarget>& targets, const RunOptions& options,
                            FileProgress& progress);
 
+// After writing `mesh` to the Abaqus file `file`: a warning in `r` if coordinates had to be rounded.
+void warn_if_rounded(const std::string& file, const io::VolumeMesh& mesh, FileResult& r);
+
 // "15706 tetrahedra, 0 Steiner points (sweep-sphere, 0.53 s)"
 std::string summary_of(const FileResult& r);
 

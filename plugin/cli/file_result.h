@@ -21,6 +21,7 @@ struct FileResult {
   int code = kOk;             // exit code of this file
   std::string message;        // the failure's one line (empty on success)
   std::vector<std::string> details;
+  std::vector<std::string> warnings;  // the file converted, but the user should know (one line each)
 
   int dimension = 3;
   uint64_t input_points = 0, input_simplices = 0;  // after welding; triangles for surfaces

@@ -187,6 +187,7 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
       const FileResult& r = results[i];
       if (r.code == kOk) {
         if (!req.options.quiet) console.line(label + " -> " + names_of(r.outputs) + ": " + summary_of(r));
+        for (const auto& w : r.warnings) console.line("sweepcdt: warning: " + w);
       } else {
         console.line("sweepcdt: " + r.message);
         if (!req.options.quiet)

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 
 #include <unistd.h>
@@ -10,10 +11,13 @@
 namespace sweepcdt::cli {
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+// Read by every worker thread, written by the handler: a lock-free atomic is safe in both roles
+// (a volatile sig_atomic_t would be a data race between threads).
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
 
 extern "C" void on_sigint(int) {
-  g_interrupted = 1;
+  g_interrupted.store(true);
   std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
 }
 
@@ -24,12 +28,16 @@ constexpr int kBarWidth = 30;
 }  // namespace
 
 void install_interrupt_handler() { std::signal(SIGINT, on_sigint); }
-bool interrupted() { return g_interrupted != 0; }
+bool interrupted() { return g_interrupted.load(std::memory_order_relaxed); }
 void throw_if_interrupted() {
   if (interrupted()) throw CancelledError();
 }
 
-Console::Console(std::ostream& err, bool quiet) : err_(err), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0) {}
+// A terminal that cannot move the cursor (TERM=dumb, e.g. an editor's shell buffer) gets log lines.
+Console::Console(std::ostream& err, bool quiet) : err_(err), quiet_(quiet) {
+  const char* term = std::getenv("TERM");
+  terminal_ = ::isatty(STDERR_FILENO) != 0 && !(term && std::string(term) == "dumb");
+}
 
 void Console::clear_bar_locked() {
   if (bar_shown_) err_ << "\r\033[K";

@@ -34,6 +34,7 @@ nlohmann::ordered_json file_json(const FileResult& r) {
   j["status"] = status_word(r.code);
   j["exit_code"] = r.code;
   if (!r.message.empty()) j["message"] = r.message;
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["dimension"] = r.dimension;
   j["input_vertices"] = r.input_points;
   j[r.dimension == 3 ? "input_triangles" : "input_simplices"] = r.input_simplices;

@@ -12,14 +12,19 @@
 //    must have all three vertices on one input triangle (2.), with the tetrahedron on the side that
 //    the input's exterior notation says is inside, and every input triangle must be covered by as
 //    many such facets as a triangulation of it with its points has (b + 2i - 2: b points on its
-//    edges, i inside). Without Steiner points the input PLC itself is used instead: exact.
+//    edges, i inside), forming one patch bounded by its edges. Without Steiner points the input PLC
+//    itself is used for validate() instead: exact.
+//    The file's own boundary triangles (what solvers read) must be exactly these facets, oriented
+//    outward, tagged with their input triangle.
 // 4. validate() of the tetrahedra against that PLC: topology, orientation, every constraint a
 //    facet, the domain covered (exact volume sums), every interior facet locally Delaunay.
 #include "verify_mesh.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 #include "sweepcdt/predicates.h"
@@ -75,6 +80,116 @@ struct OnTriangle {
 
 using Facet = std::array<uint32_t, 3>;
 
+// The input triangles whose closed bounding box holds a point (a midpoint of two points of a
+// triangle stays in its box, rounding included: rounding is monotone). A uniform grid of about one
+// cell per triangle, so that checking many Steiner points is not O(points x triangles).
+class TriangleGrid {
+ public:
+  explicit TriangleGrid(const Plc<3>& plc) : box_(plc.num_simplices()) {
+    lo_.fill(std::numeric_limits<double>::infinity());
+    std::array<double, 3> hi;
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t j = 0; j < box_.size(); ++j)
+      for (int c = 0; c < 3; ++c) {
+        const double a = plc.point(plc.simplex(j)[0])[c], b = plc.point(plc.simplex(j)[1])[c], d = plc.point(plc.simplex(j)[2])[c];
+        box_[j][c] = std::min({a, b, d});
+        box_[j][3 + c] = std::max({a, b, d});
+        lo_[c] = std::min(lo_[c], box_[j][c]);
+        hi[c] = std::max(hi[c], box_[j][3 + c]);
+      }
+    cells_ = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(box_.size()))));
+    for (int c = 0; c < 3; ++c) scale_[c] = hi[c] > lo_[c] ? cells_ / (hi[c] - lo_[c]) : 0.0;
+    grid_.resize(std::size_t(cells_) * cells_ * cells_);
+    for (uint32_t j = 0; j < box_.size(); ++j) {
+      std::array<int, 3> a, b;
+      for (int c = 0; c < 3; ++c) a[c] = cell(c, box_[j][c]), b[c] = cell(c, box_[j][3 + c]);
+      for (int x = a[0]; x <= b[0]; ++x)
+        for (int y = a[1]; y <= b[1]; ++y)
+          for (int z = a[2]; z <= b[2]; ++z) grid_[index(x, y, z)].push_back(j);  // ascending j in every cell
+    }
+  }
+  const std::vector<uint32_t>& near(const double* p) const { return grid_[index(cell(0, p[0]), cell(1, p[1]), cell(2, p[2]))]; }
+  bool box_holds(uint32_t j, const double* p) const {
+    for (int c = 0; c < 3; ++c)
+      if (p[c] < box_[j][c] || p[c] > box_[j][3 + c]) return false;
+    return true;
+  }
+
+ private:
+  // Monotone in x, so a box holding p overlaps p's cell.
+  int cell(int c, double x) const {
+    const double f = std::floor((x - lo_[c]) * scale_[c]);
+    return f < 0 ? 0 : f >= cells_ ? cells_ - 1 : static_cast<int>(f);
+  }
+  std::size_t index(int x, int y, int z) const { return (std::size_t(x) * cells_ + y) * cells_ + z; }
+
+  std::vector<std::array<double, 6>> box_;
+  std::array<double, 3> lo_, scale_;
+  int cells_ = 1;
+  std::vector<std::vector<uint32_t>> grid_;
+};
+
+// 3a. The pieces of each input triangle form one patch: every edge inside the patch is shared by
+// exactly two pieces, and every edge of one piece only runs along an edge of the triangle (both
+// ends on that edge). With the counts of 3, this makes the patch a triangulated disc bounded by
+// the triangle's edges: the triangle is covered, without gaps or folds.
+void check_patches(const std::map<Facet, std::pair<Facet, uint32_t>>& on_input, const std::vector<std::vector<OnTriangle>>& on,
+                   const Plc<3>& input, Problems& problems) {
+  std::vector<std::array<uint32_t, 3>> edges;  // (input triangle, smaller id, larger id)
+  for (const auto& [key, entry] : on_input)
+    for (int k = 0; k < 3; ++k) edges.push_back({entry.second, std::min(key[k], key[(k + 1) % 3]), std::max(key[k], key[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  const auto edge_bits = [&](uint32_t j, uint32_t point) {
+    for (const OnTriangle& p : on[j])
+      if (p.point == point) return p.edges;
+    return uint8_t{0};
+  };
+  for (std::size_t a = 0, b; a < edges.size(); a = b) {
+    for (b = a + 1; b < edges.size() && edges[b] == edges[a]; ++b) {
+    }
+    const auto [j, p, q] = edges[a];
+    const std::string name = "edge (" + std::to_string(p) + " " + std::to_string(q) + ") of the pieces of input triangle " + std::to_string(j) +
+                             " (" + ids_text(input.simplex(j), 3) + ")";
+    if (b - a > 2) problems.add(name + " is shared by " + std::to_string(b - a) + " of them");
+    if (b - a == 1 && (edge_bits(j, p) & edge_bits(j, q)) == 0) problems.add(name + " bounds the patch but does not run along an edge of the triangle");
+  }
+}
+
+bool same_rotation(const Facet& a, const Facet& b) {
+  return a == b || a == Facet{b[1], b[2], b[0]} || a == Facet{b[2], b[0], b[1]};
+}
+
+// 3b. What solvers read as the boundary — the file's boundary triangles and their tags — must be
+// the tetrahedra's boundary facets, counterclockwise seen from outside, each tagged with the input
+// triangle it lies on. `on_input`: the boundary facets found from the tetrahedra.
+void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Facet, std::pair<Facet, uint32_t>>& on_input, Problems& problems,
+                         MeshVerification& v) {
+  v.file_boundary = mesh.num_boundary() > 0;
+  if (!v.file_boundary) return;
+  // Formats without face tags (Abaqus) give kNone: nothing to compare.
+  const bool tagged = mesh.boundary_tags.size() == mesh.num_boundary() &&
+                      std::any_of(mesh.boundary_tags.begin(), mesh.boundary_tags.end(), [](uint32_t t) { return t != kNone; });
+  v.file_tags = tagged;
+  std::size_t listed = 0;
+  for (std::size_t k = 0; k < mesh.num_boundary(); ++k) {
+    const Facet g{mesh.boundary[3 * k], mesh.boundary[3 * k + 1], mesh.boundary[3 * k + 2]};
+    Facet key = g;
+    std::sort(key.begin(), key.end());
+    const auto it = on_input.find(key);
+    const std::string name = "the file's boundary triangle " + std::to_string(k) + " (" + ids_text(g.data(), 3) + ")";
+    if (it == on_input.end()) {
+      problems.add(name + " is not a boundary facet of the tetrahedra");
+      continue;
+    }
+    ++listed;
+    if (!same_rotation(g, it->second.first)) problems.add(name + " is oriented inward (clockwise seen from outside)");
+    if (tagged && mesh.boundary_tags[k] != it->second.second)
+      problems.add(name + " is tagged " + std::to_string(mesh.boundary_tags[k]) + " but lies on input triangle " + std::to_string(it->second.second));
+  }
+  if (listed < on_input.size())
+    problems.add(std::to_string(on_input.size() - listed) + " boundary facets of the tetrahedra are missing from the file's boundary triangles");
+}
+
 }  // namespace
 
 MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
@@ -110,17 +225,11 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       on[j].push_back({p, static_cast<uint8_t>((1u << k) | (1u << ((k + 2) % 3)))});
       triangles_of[p].push_back(j);
     }
-  std::vector<std::array<double, 6>> box(m);  // closed bounding boxes: a midpoint stays in its triangle's
-  for (uint32_t j = 0; j < m; ++j)
-    for (int c = 0; c < 3; ++c) {
-      const double a = input.point(input.simplex(j)[0])[c], b = input.point(input.simplex(j)[1])[c], d = input.point(input.simplex(j)[2])[c];
-      box[j][c] = std::min({a, b, d});
-      box[j][3 + c] = std::max({a, b, d});
-    }
+  const TriangleGrid grid(input);
   for (uint32_t s = static_cast<uint32_t>(n); s < total; ++s) {
     const double* ps = mesh.points.data() + 3 * std::size_t{s};
-    for (uint32_t j = 0; j < m; ++j) {
-      if (ps[0] < box[j][0] || ps[1] < box[j][1] || ps[2] < box[j][2] || ps[0] > box[j][3] || ps[1] > box[j][4] || ps[2] > box[j][5]) continue;
+    for (const uint32_t j : grid.near(ps)) {
+      if (!grid.box_holds(j, ps)) continue;
       const auto& known = on[j];
       bool found = false;
       uint8_t edges = 0;
@@ -165,6 +274,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
   Plc<3> refined;
   refined.points = mesh.points;
   std::vector<std::size_t> pieces(m, 0);
+  std::map<Facet, std::pair<Facet, uint32_t>> on_input;  // sorted ids -> (oriented boundary facet, input triangle)
   for (const auto& [key, entry] : facets) {
     if (entry.first != 1) continue;  // interior (2) or over-shared (validate() reports it)
     ++v.boundary_triangles;
@@ -188,6 +298,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       problems.add("boundary triangle (" + ids_text(f.data(), 3) + ") on input triangle " + std::to_string(j) +
                    " has its tetrahedron on the outside of the surface");
     ++pieces[j];
+    on_input.emplace(key, std::make_pair(f, j));
     refined.simplices.insert(refined.simplices.end(), f.begin(), f.end());
     refined.exterior.push_back(ExteriorSide::Negative);
     refined.tags.push_back(j);
@@ -200,6 +311,8 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       problems.add("input triangle " + std::to_string(j) + " (" + ids_text(input.simplex(j), 3) + ") is covered by " + std::to_string(pieces[j]) +
                    " boundary triangles; a triangulation of it with its " + std::to_string(b + i) + " points has " + std::to_string(expected));
   }
+  check_patches(on_input, on, input, problems);
+  check_file_boundary(mesh, on_input, problems, v);
   if (!v.ok()) return v;
 
   // 4. validate(): against the input itself when nothing was added.

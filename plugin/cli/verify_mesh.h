@@ -18,6 +18,8 @@ struct MeshVerification {
   std::size_t steiner_points = 0;
   std::size_t steiner_exactly_on = 0;   // Steiner points exactly on their input triangle
   std::size_t boundary_triangles = 0;   // boundary facets of the tetrahedra
+  bool file_boundary = false;           // the file lists boundary triangles (checked against those)
+  bool file_tags = false;               // ... with tags (input triangle ids; checked too)
   bool validated = false;               // validate() ran (all earlier checks passed)
   bool ok() const { return total_problems == 0; }
 };

@@ -3,6 +3,7 @@
 // for the dimension) with their exit codes.
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "sweepcdt/io/volume_mesh.h"
@@ -52,18 +53,20 @@ TEST(CliCdt, TwoDimensionalPolyWithHole) {
   EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"diamond.poly", "d.node", "d.ele", "d.simplices"}));
 }
 
-// A cube as a TetGen .poly with quadrilateral facets, as .node/.ele and as a volume mesh.
+// A cube as a TetGen .poly with quadrilateral facets, as .node/.ele and as a volume mesh. Its eight
+// corners are cospherical: whether the diagonals the reader splits the squares along admit a CDT
+// depends on the vertex order (README, "Exactness"), so Steiner points are asked for.
 TEST(CliCdt, ThreeDimensionalPoly) {
   TempDir dir;
   const auto poly = dir.write("cube.poly",
                               "8 3 0 0\n1 0 0 0\n2 2 0 0\n3 2 2 0\n4 0 2 0\n5 0 0 2\n6 2 0 2\n7 2 2 2\n8 0 2 2\n"
                               "6 0\n1\n4 1 2 3 4\n1\n4 5 6 7 8\n1\n4 1 2 6 5\n1\n4 2 3 7 6\n1\n4 3 4 8 7\n1\n4 4 1 5 8\n"
                               "0\n0\n");
-  const CliRun r = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "c.node"), dir);
+  const CliRun r = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "c.node") + " --steiner auto", dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_EQ(first_count(dir.path() / "c.node"), 8u);
+  EXPECT_GE(first_count(dir.path() / "c.node"), 8u);
   EXPECT_TRUE(fs::exists(dir.path() / "c.ele"));
-  const CliRun v = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "c.vtu") + " --check", dir);
+  const CliRun v = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "c.vtu") + " --check --steiner auto", dir);
   ASSERT_EQ(v.exit_code, 0) << v.out;
   const io::VolumeMesh mesh = io::read_volume_mesh(dir.path() / "c.vtu");
   EXPECT_EQ(io::read_volume_mesh(dir.path() / "c.node").tetrahedra, mesh.tetrahedra);
@@ -75,16 +78,26 @@ TEST(CliCdt, ThreeDimensionalPoly) {
     six_volume += std::abs(predicates::orient_value<3>({p(0), p(1), p(2), p(3)}));
   }
   EXPECT_EQ(six_volume, 48.0);
-  EXPECT_EQ(mesh.num_boundary(), 12u);
+  EXPECT_GE(mesh.num_boundary(), 12u);
 }
 
 // Four dimensions: a 4-simplex with a point inside, as .simplices (5 simplices around the point).
 TEST(CliCdt, FourDimensionalPlc) {
   TempDir dir;
   const auto plc = dir.write("s.plc", "plc 4\npoints 6\n0 0 0 0\n8 0 0 0\n0 8 0 0\n0 0 8 0\n0 0 0 8\n1 1 1 1\nsimplices 1\n0 1 2 3\n");
-  const CliRun r = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.simplices") + " --check", dir);
+  const auto stats = dir.path() / "stats.json";
+  const CliRun r = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.simplices") + " --check --stats " + quoted(stats), dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(r.says("4D, 5 simplices, checked")) << r.out;
+  const auto json = nlohmann::json::parse(bytes_of(stats));
+  EXPECT_EQ(json["command"], "cdt");
+  EXPECT_EQ(json["steiner"], "none");
+  EXPECT_EQ(json["files"][0]["dimension"], 4);
+  EXPECT_EQ(json["files"][0]["input_vertices"], 6);
+  EXPECT_EQ(json["files"][0]["input_simplices"], 1);
+  EXPECT_EQ(json["files"][0]["simplices"], 5);
+  EXPECT_EQ(json["files"][0]["outputs"][0]["format"], "simplices");
+  EXPECT_EQ(json["files"][0]["validated"], true);
   std::ifstream in(dir.path() / "s.simplices");
   std::string word;
   std::size_t d = 0, n = 0, input = 0, s = 0;
@@ -95,6 +108,7 @@ TEST(CliCdt, FourDimensionalPlc) {
   in >> word >> s;
   EXPECT_EQ(word, "simplices");
   EXPECT_EQ(s, 5u);
+  fs::remove(stats);
   const CliRun node = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "s.node"), dir);
   EXPECT_EQ(node.exit_code, 2) << node.out;
   EXPECT_TRUE(node.says("use .simplices")) << node.out;

@@ -1,12 +1,16 @@
 // `sweepcdt check INPUT OUTPUT`: accepts what `sweepcdt` wrote, rejects (exit 6) meshes that are
 // not the CDT — a tetrahedron removed, a vertex moved, a Steiner point moved by one ulp, a flip that
-// keeps a valid tetrahedralization but breaks the Delaunay property — and says why.
+// keeps a valid tetrahedralization but breaks the Delaunay property, boundary triangles flipped,
+// mistagged or missing — and says why.
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "sweepcdt/io/volume_mesh.h"
+#include "surface_builders.h"
+#include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/predicates.h"
 #include "test_shapes.h"
 
@@ -73,6 +77,7 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
   EXPECT_EQ(ok.exit_code, 0) << ok.out;
   EXPECT_TRUE(ok.says("moon.mesh: " + std::to_string(mesh.num_tetrahedra()) + " tetrahedra, 2502 vertices (0 Steiner points)")) << ok.out;
   EXPECT_TRUE(ok.says("every interior facet locally Delaunay")) << ok.out;
+  EXPECT_TRUE(ok.says("the file's boundary triangles are those, oriented outward, tagged")) << ok.out;
 
   const auto tampered = dir.path() / "tampered.mesh";
   {
@@ -99,6 +104,23 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
     const CliRun r = check(input, tampered, dir);
     EXPECT_EQ(r.exit_code, 6) << r.out;
     EXPECT_TRUE(r.says("locally-delaunay")) << r.out;
+  }
+  // What solvers read as the boundary: orientation, tags, completeness.
+  {
+    io::VolumeMesh m = mesh;
+    ASSERT_GT(m.num_boundary(), 10u);
+    std::swap(m.boundary[3 * 5 + 1], m.boundary[3 * 5 + 2]);
+    m.boundary_tags[9] = m.boundary_tags[9] == 0 ? 1 : 0;
+    m.boundary.resize(m.boundary.size() - 3);
+    m.boundary_tags.pop_back();
+    io::write_volume_mesh(tampered, m, io::MeshFormat::Gmsh41);
+    const CliRun r = check(input, tampered, dir);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("the file's boundary triangle 5 (")) << r.out;
+    EXPECT_TRUE(r.says("is oriented inward")) << r.out;
+    EXPECT_TRUE(r.says("the file's boundary triangle 9 (")) << r.out;
+    EXPECT_TRUE(r.says("but lies on input triangle")) << r.out;
+    EXPECT_TRUE(r.says("1 boundary facets of the tetrahedra are missing from the file's boundary triangles")) << r.out;
   }
   // Another surface's mesh.
   const CliRun other = check(shared_data() / "off/icosahedron.off", good, dir);
@@ -138,6 +160,27 @@ TEST(CliCheck, SteinerPointsMustBeTheMidpointsCdtMakes) {
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
   EXPECT_TRUE(r.says("is not the midpoint of two points on one input triangle")) << r.out;
+}
+
+// Nested shells: a box with a box-shaped cavity (given outward: the importer reverses it) and a
+// body inside the cavity. Two regions, boundary triangles facing both ways; check must accept it.
+TEST(CliCheck, CavityAndNestedBody) {
+  TempDir dir;
+  io::Soup soup;
+  io::testing::add_box(soup, {0, 0, 0}, {12, 11, 10});
+  io::testing::add_box(soup, {2, 3, 2}, {9, 8, 7});
+  io::testing::add_box(soup, {4, 5, 3}, {6, 6, 5});
+  const auto input = dir.path() / "nested.stl";
+  io::write_surface(input, soup, io::Format::StlBinary);
+  const auto output = dir.path() / "nested.msh";
+  const CliRun r = run(quoted(input) + " -o " + quoted(output) + " --stats " + quoted(dir.path() / "s.json"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const CliRun ok = check(input, output, dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "s.json"))["files"][0];
+  EXPECT_EQ(stats["input_triangles"], 36);
+  EXPECT_EQ(stats["regions"], 2) << "the shell between box and cavity, and the body inside";
+  EXPECT_TRUE(ok.says("valid: input vertices identical; " + std::to_string(stats["boundary_triangles"].get<int>()) + " boundary triangles")) << ok.out;
 }
 
 }  // namespace

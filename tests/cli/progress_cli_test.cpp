@@ -1,0 +1,124 @@
+// Progress and Ctrl-C, as a user sees them: a bar on a terminal, log lines in a file, and SIGINT
+// ending a run (single or batch) with exit 130 and nothing written.
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <thread>
+
+#include <fcntl.h>
+#include <pty.h>
+#include <spawn.h>
+#include <unistd.h>
+
+#include "cli_run.h"
+
+extern char** environ;
+
+namespace sweepcdt::cli::testing {
+namespace {
+
+// Gift-wrapping these takes far longer than the tests wait: they are always interrupted.
+const fs::path kLongInput = shared_data() / "drc/knot1.drc";
+
+// Runs sweepcdt with `words`, stderr to `log`, and sends SIGINT after `delay`. The exit status, and
+// how long the process took to end after the signal.
+std::pair<int, double> run_and_interrupt(std::vector<std::string> words, const std::string& log, std::chrono::milliseconds delay,
+                                         int stderr_fd = -1) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (stderr_fd >= 0) posix_spawn_file_actions_adddup2(&actions, stderr_fd, 2);
+  else posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  words.insert(words.begin(), SWEEPCDT_CLI);
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  // On the pseudo-terminal, a terminal that can redraw (CI may run with TERM=dumb or none).
+  std::vector<std::string> env_words{"TERM=xterm"};
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("TERM=", 0) != 0) env_words.push_back(*e);
+  std::vector<char*> env;
+  for (auto& w : env_words) env.push_back(w.data());
+  env.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, SWEEPCDT_CLI, &actions, nullptr, argv.data(), stderr_fd >= 0 ? env.data() : environ) != 0) return {-1, 0};
+  posix_spawn_file_actions_destroy(&actions);
+  std::this_thread::sleep_for(delay);
+  ::kill(pid, SIGINT);
+  const auto sent = std::chrono::steady_clock::now();
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return {status, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count()};
+}
+
+// Ctrl-C during a long run (gift-wrapping the knot takes minutes): exit 130, a message, no output.
+TEST(CliProgress, CtrlCCancelsCleanly) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const std::string input = kLongInput.string();
+  const std::string log = (dir.path() / ".log").string();
+  const auto [status, seconds] =
+      run_and_interrupt({input, "-o", (dir.path() / "knot1.mesh").string(), "--algorithm", "giftwrap"}, log, std::chrono::milliseconds(1500));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
+  EXPECT_LT(seconds, 10.0) << "cancellation took too long";
+  EXPECT_NE(bytes_of(log).find(input + ": cancelled (Ctrl-C): nothing written"), std::string::npos) << bytes_of(log);
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+// In a batch: the files in progress stop, the rest never start, nothing is written, and --stats
+// still records what happened.
+TEST(CliProgress, CtrlCCancelsABatch) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const std::string log = (dir.path() / ".log").string();
+  const auto [status, seconds] = run_and_interrupt(
+      {"mesh", kLongInput.string(), (shared_data() / "glb/moon.glb").string(),
+       (shared_data() / "off/icosahedron.off").string(), "--out-dir", out.string(), "--threads", "2", "--algorithm", "giftwrap",
+       "--stats", (dir.path() / "stats.json").string()},
+      log, std::chrono::milliseconds(1500));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
+  EXPECT_LT(seconds, 10.0) << "cancellation took too long";
+  EXPECT_NE(bytes_of(log).find("1 files not started"), std::string::npos) << bytes_of(log);
+  EXPECT_TRUE(files_in(out).empty());
+  const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "stats.json"));
+  EXPECT_EQ(stats["exit_code"], 130);
+  for (const auto& f : stats["files"]) EXPECT_EQ(f["status"], "cancelled") << f;
+}
+
+// On a terminal (a pseudo-terminal here), a bar redrawn in place once the work passes a second; in a
+// file, plain log lines without escape sequences.
+TEST(CliProgress, BarOnATerminalLogLinesOtherwise) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  int master = -1, slave = -1;
+  ASSERT_EQ(::openpty(&master, &slave, nullptr, nullptr, nullptr), 0);
+  std::string screen;
+  std::thread reader([&] {
+    char buf[4096];
+    for (ssize_t n; (n = ::read(master, buf, sizeof buf)) > 0;) screen.append(buf, static_cast<std::size_t>(n));
+  });
+  const auto [status, seconds] = run_and_interrupt({kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"},
+                                                   "", std::chrono::milliseconds(2500), slave);
+  ::close(slave);  // the reader sees EOF (EIO) once the child's copy is gone too
+  reader.join();
+  ::close(master);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << screen;
+  EXPECT_NE(screen.find("\r\033[K" + kLongInput.string() + ": gift-wrapping ["), std::string::npos) << screen;
+  EXPECT_NE(screen.find("%"), std::string::npos) << screen;
+
+  const std::string log = (dir.path() / ".log").string();
+  const auto [log_status, log_seconds] =
+      run_and_interrupt({kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"}, log, std::chrono::milliseconds(2500));
+  EXPECT_EQ(WEXITSTATUS(log_status), 130);
+  const std::string text = bytes_of(log);
+  EXPECT_NE(text.find(kLongInput.string() + ": gift-wrapping ("), std::string::npos) << text;
+  EXPECT_EQ(text.find('\033'), std::string::npos) << text;
+  EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+}  // namespace
+}  // namespace sweepcdt::cli::testing
