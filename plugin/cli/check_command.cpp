@@ -56,7 +56,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
     out << input << ": " << plc.num_simplices() << " triangles, " << plc.num_points() << " vertices\n"
         << output << ": " << mesh.num_tetrahedra() << " tetrahedra, " << mesh.num_points() << " vertices ("
         << v.steiner_points << " Steiner points";
-    if (v.steiner_points) out << ", " << v.steiner_exactly_on << " exactly on their input triangle, the others its rounded midpoints";
+    if (v.steiner_points) out << ", " << v.steiner_exactly_on << " exactly on their input triangle, the others rounded split points of its edges";
     out << ")\n";
   }
   if (!v.ok()) {

@@ -80,7 +80,7 @@ struct OnTriangle {
 
 using Facet = std::array<uint32_t, 3>;
 
-// The input triangles whose closed bounding box holds a point (a midpoint of two points of a
+// The input triangles whose closed bounding box holds a point (a split point of two points of a
 // triangle stays in its box, rounding included: rounding is monotone). A uniform grid of about one
 // cell per triangle, so that checking many Steiner points is not O(points x triangles).
 class TriangleGrid {

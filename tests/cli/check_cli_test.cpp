@@ -132,8 +132,9 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
   EXPECT_TRUE(unreadable.says(junk.string())) << unreadable.out;
 }
 
-// With Steiner points, each must be reproduced bit for bit as a midpoint on its input triangle.
-TEST(CliCheck, SteinerPointsMustBeTheMidpointsCdtMakes) {
+// With Steiner points, each must be reproduced bit for bit as the split point cdt() makes on an
+// input edge (sweepcdt/steiner_point.h).
+TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   TempDir dir;
   const Plc<3> prism = fixtures::twisted_prism(0.5);
   std::string off = "OFF\n6 8 0\n";
@@ -159,7 +160,7 @@ TEST(CliCheck, SteinerPointsMustBeTheMidpointsCdtMakes) {
   const CliRun r = check(input, tampered, dir);
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
-  EXPECT_TRUE(r.says("is not the midpoint of two points on one input triangle")) << r.out;
+  EXPECT_TRUE(r.says("is not the split point of two points on one input edge")) << r.out;
 }
 
 // Nested shells: a box with a box-shaped cavity (given outward: the importer reverses it) and a

@@ -20,6 +20,7 @@ TEST(CliUsage, HelpAndVersion) {
   EXPECT_TRUE(mesh_help.says("--steiner auto|none")) << mesh_help.out;
   EXPECT_EQ(run("mesh --help", dir).out, mesh_help.out);
   EXPECT_TRUE(run("check --help", dir).says("a + (b - a)/2"));
+  EXPECT_TRUE(run("check --help", dir).says("power of two from an input vertex"));
   EXPECT_TRUE(run("cdt --help", dir).says(".simplices"));
   const CliRun version = run("--version", dir);
   EXPECT_EQ(version.exit_code, 0);

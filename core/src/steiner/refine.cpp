@@ -35,7 +35,8 @@ std::unordered_set<uint64_t> delaunay_edges(const std::vector<double>& coordinat
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options) : options_(options), groups_(group_facets(input, options.facets)) {
+  Refiner(const Plc<3>& input, const Options& options)
+      : options_(options), groups_(group_facets(input, options.facets)), input_region_seeds_(input.region_seeds) {
     r_.num_input_points = static_cast<uint32_t>(input.num_points());
     r_.facets = groups_.num_facets();
     points_ = input.points;
@@ -51,6 +52,7 @@ class Refiner {
     r_.flips = flip_facets_to_cdt({points_, tris_, facet, groups_.segments, on_segment_});
 
     r_.plc.points = std::move(points_);
+    r_.plc.region_seeds = input_region_seeds_;
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
       r_.plc.exterior.push_back(groups_.exterior[original_[t]]);
@@ -77,6 +79,11 @@ class Refiner {
         }
       if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
       if (split.empty()) return;
+      if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
+        throw NoCdtError("Steiner points: " + std::to_string(split.size()) + " segments still not Delaunay after " +
+                             std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +
+                             " Steiner points, over the limit for this input (20 per input point + 10000)",
+                         {static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
       split_triangles(new_point);
@@ -133,6 +140,7 @@ class Refiner {
 
   const Options& options_;
   FacetGroups groups_;
+  std::vector<RegionSeed<3>> input_region_seeds_;
   RefinedPlc r_;
   std::vector<double> points_;
   std::vector<std::array<uint32_t, 2>> on_segment_;
