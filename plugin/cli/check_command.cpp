@@ -64,7 +64,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
         << (v.total_problems == 1 ? "" : "s") << "\n";
     for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
     if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
-    if (v.input_points_moved && fs::path(output).extension() == ".inp")
+    if (fs::path(output).extension() == ".inp")
       err << "  note: Abaqus .inp rounds coordinates that do not fit CalculiX's 20-character fields, so such a file\n"
              "  cannot be exactly the CDT of its input; write .mesh, .vtu, .msh or .node to check exactly\n";
     return kNotValid;

@@ -80,6 +80,19 @@ struct OnTriangle {
 
 using Facet = std::array<uint32_t, 3>;
 
+// The axis of the largest component of triangle abc's normal (floating point: it only picks the least
+// distorted projection; the orientations in it are exact).
+int dominant_axis(const double* a, const double* b, const double* c) {
+  int best = 0;
+  double largest = -1;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const double n = std::abs((b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]));
+    if (n > largest) largest = n, best = axis;
+  }
+  return best;
+}
+
 // The input triangles whose closed bounding box holds a point (a split point of two points of a
 // triangle stays in its box, rounding included: rounding is monotone). A uniform grid of about one
 // cell per triangle, so that checking many Steiner points is not O(points x triangles).
@@ -292,9 +305,19 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
     }
     const uint32_t j = common.front();
     const uint32_t* t = input.simplex(j);
-    const auto side = predicates::orient<3>({input.point(t[0]), input.point(t[1]), input.point(t[2]), mesh.points.data() + 3 * std::size_t{apex.at(key)}});
+    // The tetrahedron is on f's positive side. Rounded Steiner points fold a triangle's pieces by a
+    // rounding error, so an apex can sit on either side of the input triangle's exact plane: compare
+    // orientations instead, in a projection along the triangle's normal (exact; pieces do not
+    // degenerate in it), where f's orientation says on which side of the triangle its tetrahedron is.
+    int drop = dominant_axis(input.point(t[0]), input.point(t[1]), input.point(t[2]));
+    if (predicates::orient_projected<3>({input.point(t[0]), input.point(t[1]), input.point(t[2])}, drop) == predicates::Sign::Zero) drop = (drop + 1) % 3;
+    if (predicates::orient_projected<3>({input.point(t[0]), input.point(t[1]), input.point(t[2])}, drop) == predicates::Sign::Zero) drop = (drop + 1) % 3;
+    const auto piece = predicates::orient_projected<3>({mesh.points.data() + 3 * std::size_t{f[0]}, mesh.points.data() + 3 * std::size_t{f[1]},
+                                                        mesh.points.data() + 3 * std::size_t{f[2]}}, drop);
+    const auto whole = predicates::orient_projected<3>({input.point(t[0]), input.point(t[1]), input.point(t[2])}, drop);
+    const auto side = piece == whole ? predicates::Sign::Positive : predicates::Sign::Negative;
     const auto inside = input.exterior_of(j) == ExteriorSide::Negative ? predicates::Sign::Positive : predicates::Sign::Negative;
-    if (side != inside)
+    if (piece == predicates::Sign::Zero || side != inside)
       problems.add("boundary triangle (" + ids_text(f.data(), 3) + ") on input triangle " + std::to_string(j) +
                    " has its tetrahedron on the outside of the surface");
     ++pieces[j];
