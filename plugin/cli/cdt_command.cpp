@@ -62,12 +62,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
                      "-dimensional: use .simplices");
   if (options.steiner == SteinerMode::Auto && D != 3)
     throw UsageError("--steiner auto is for 3D PLCs; this one is " + std::to_string(D) + "-dimensional");
-  Options cdt_options;
-  cdt_options.algorithm = options.algorithm;
-  cdt_options.steiner = options.steiner;
-  cdt_options.facets = options.facets;
-  cdt_options.statistics = &r.cdt;
-  cdt_options.progress = progress.callback();
+  const Options cdt_options = core_options(options, &r.cdt, progress.callback());
   Plc<D> triangulated;
   const Triangulation<D> tri = cdt(plc, cdt_options, &triangulated);
   r.computed = true;

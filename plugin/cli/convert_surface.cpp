@@ -56,12 +56,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     r.input_points = plc.num_points();
     r.input_simplices = plc.num_simplices();
 
-    Options cdt_options;
-    cdt_options.algorithm = options.algorithm;
-    cdt_options.steiner = options.steiner;
-    cdt_options.facets = options.facets;
-    cdt_options.statistics = &r.cdt;
-    cdt_options.progress = progress.callback();
+    const Options cdt_options = core_options(options, &r.cdt, progress.callback());
     Plc<3> triangulated;
     const Triangulation<3> tri = cdt(plc, cdt_options, &triangulated);
     r.computed = true;

@@ -5,6 +5,16 @@ namespace sweepcdt::cli {
 const char* to_string(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
 const char* to_string(FacetMode mode) { return mode == FacetMode::Coplanar ? "coplanar" : "triangles"; }
 
+Options core_options(const RunOptions& options, CdtStatistics* statistics, std::function<bool(const Progress&)> progress) {
+  Options o;
+  o.algorithm = options.algorithm;
+  o.steiner = options.steiner;
+  o.facets = options.facets;
+  o.statistics = statistics;
+  o.progress = std::move(progress);
+  return o;
+}
+
 bool read_run_option(ArgReader& args, RunOptions& options) {
   std::string v;
   if (args.value("--algorithm", v)) {

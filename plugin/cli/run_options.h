@@ -1,6 +1,7 @@
 // Options shared by the commands that compute a CDT (`mesh`, `cdt`): how to compute it and what to
 // report. Parsed here once so both commands accept the same spellings.
 #pragma once
+#include <functional>
 #include <string>
 
 #include "args.h"
@@ -19,6 +20,9 @@ struct RunOptions {
 
 const char* to_string(SteinerMode mode);  // "auto", "none"
 const char* to_string(FacetMode mode);    // "triangles", "coplanar"
+
+// The core options of a run: what the user chose, plus where statistics and progress go.
+Options core_options(const RunOptions& options, CdtStatistics* statistics, std::function<bool(const Progress&)> progress);
 
 // Consumes one of the shared options at the reader's position; false if it is none of them.
 bool read_run_option(ArgReader& args, RunOptions& options);

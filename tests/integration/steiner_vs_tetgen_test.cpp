@@ -7,13 +7,13 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <regex>
 #include <string>
 
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/io/to_plc.h"
+#include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/validate.h"
 #include "test_shapes.h"
 
@@ -21,14 +21,12 @@ using namespace sweepcdt;
 
 namespace {
 
+// The PLC's triangles as an OFF surface (exact coordinates: io writes the shortest round trip).
 void write_off(const std::filesystem::path& path, const Plc<3>& plc) {
-  std::ofstream out(path);
-  out.precision(17);
-  out << "OFF\n" << plc.num_points() << ' ' << plc.num_simplices() << " 0\n";
-  for (std::size_t i = 0; i < plc.num_points(); ++i)
-    out << plc.point(i)[0] << ' ' << plc.point(i)[1] << ' ' << plc.point(i)[2] << '\n';
-  for (std::size_t j = 0; j < plc.num_simplices(); ++j)
-    out << "3 " << plc.simplex(j)[0] << ' ' << plc.simplex(j)[1] << ' ' << plc.simplex(j)[2] << '\n';
+  io::Soup soup;
+  soup.points = plc.points;
+  soup.triangles = plc.simplices;
+  io::write_surface(path, soup, io::Format::Off);
 }
 
 // TetGen's Steiner points for `plc` (the sum of the "Steiner points ...: N" lines of its report), or
