@@ -13,18 +13,6 @@
 
 using namespace sweepcdt;
 
-namespace {
-
-// The PLC's triangles as an OFF surface (exact coordinates: io writes the shortest round trip).
-void write_off(const std::filesystem::path& path, const Plc<3>& plc) {
-  io::Soup soup;
-  soup.points = plc.points;
-  soup.triangles = plc.simplices;
-  io::write_surface(path, soup, io::Format::Off);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]\n", argv[0]);
@@ -42,7 +30,7 @@ int main(int argc, char** argv) {
     else if (flag == "--off") off = value;
   }
   const Plc<3> plc = io::import_plc(argv[1]);
-  if (!off.empty()) write_off(off, plc);
+  if (!off.empty()) io::write_surface(off, plc, io::Format::Off);
   CdtStatistics stats;
   options.statistics = &stats;
   std::string error;

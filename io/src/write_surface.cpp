@@ -97,4 +97,12 @@ void write_surface(const std::filesystem::path& file, const Soup& soup, Format f
   detail::write_files_atomically({{file, std::move(bytes)}}, file.string());
 }
 
+void write_surface(const std::filesystem::path& file, const Plc<3>& plc, Format format) {
+  Soup soup;
+  soup.file = file.string();
+  soup.points = plc.points;
+  soup.triangles = plc.simplices;
+  write_surface(file, soup, format);
+}
+
 }  // namespace sweepcdt::io

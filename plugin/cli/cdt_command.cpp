@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "args.h"
+#include "check_before_writing.h"
 #include "convert_surface.h"
 #include "errors.h"
 #include "exit_codes.h"
@@ -45,10 +46,6 @@ std::optional<OutputFormat> format_of(const std::string& file) {
   return std::nullopt;
 }
 
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 template <int D>
 void triangulate(const Plc<D>& plc, const std::string& output, const OutputFormat& format, const RunOptions& options,
                  FileProgress& progress, FileResult& r, bool& writing) {
@@ -67,19 +64,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
   const Triangulation<D> tri = cdt(plc, cdt_options, &triangulated);
   r.computed = true;
   r.simplices = tri.num_simplices();
-  if (options.check) {
-    progress.phase("validating");
-    const auto t = std::chrono::steady_clock::now();
-    const ValidationReport report = validate_triangulated(tri, triangulated);
-    r.seconds_validate = since(t);
-    if (!report.ok()) {
-      r.code = kNotValid;
-      r.message = r.input + ": --check: the computed triangulation is not a valid CDT; nothing written";
-      for (const auto& f : report.failures) r.details.push_back(r.input + ": " + f.check + ": " + f.detail);
-      return;
-    }
-    r.validated = true;
-  }
+  if (options.check && !check_before_writing(tri, triangulated, progress, r)) return;
   throw_if_interrupted();
   progress.phase("writing");
   const auto t = std::chrono::steady_clock::now();

@@ -8,15 +8,12 @@
 #include <cstdio>
 #include <set>
 
+#include "check_before_writing.h"
 #include "errors.h"
 #include "sweepcdt/io/to_plc.h"
 
 namespace sweepcdt::cli {
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 void fail(FileResult& r, Failure f) {
   r.code = f.code;
@@ -62,20 +59,9 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     r.computed = true;
     r.simplices = tri.num_simplices();
 
-    if (options.check) {
-      progress.phase("validating");
-      const auto t = std::chrono::steady_clock::now();
-      const ValidationReport report = validate_triangulated(tri, triangulated);
-      r.seconds_validate = since(t);
-      if (!report.ok()) {
-        r.code = kNotValid;
-        r.message = input + ": --check: the computed triangulation is not a valid CDT (" + std::to_string(report.failures.size()) +
-                    " problems shown); nothing written";
-        for (const auto& f : report.failures) r.details.push_back(input + ": " + f.check + ": " + f.detail);
-        r.seconds_total = since(start);
-        return r;
-      }
-      r.validated = true;
+    if (options.check && !check_before_writing(tri, triangulated, progress, r)) {
+      r.seconds_total = since(start);
+      return r;
     }
 
     const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);

@@ -136,16 +136,7 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
 // input edge (sweepcdt/steiner_point.h).
 TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   TempDir dir;
-  const Plc<3> prism = fixtures::twisted_prism(0.5);
-  std::string off = "OFF\n6 8 0\n";
-  char buf[128];
-  for (uint32_t i = 0; i < 6; ++i) {
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", prism.point(i)[0], prism.point(i)[1], prism.point(i)[2]);
-    off += buf;
-  }
-  for (std::size_t j = 0; j < 8; ++j)
-    off += "3 " + std::to_string(prism.simplex(j)[0]) + " " + std::to_string(prism.simplex(j)[1]) + " " + std::to_string(prism.simplex(j)[2]) + "\n";
-  const auto input = dir.write("prism.off", off);
+  const auto input = write_schonhardt(dir, "prism.off");
   const auto good = dir.path() / "prism.vtu";
   const io::VolumeMesh mesh = make_mesh(input, good, dir);
   ASSERT_GT(mesh.num_points(), 6u);

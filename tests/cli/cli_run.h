@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 
 #include "io_test_util.h"
+#include "sweepcdt/io/write_surface.h"
+#include "test_shapes.h"
 
 namespace sweepcdt::cli::testing {
 
@@ -63,6 +65,13 @@ inline const char* const kMeshesWithCdt[] = {"off/icosahedron.off", "off/femur.o
                                              "gltf/two_objects_inverse_materials.gltf", "glb/moon.glb", "glb/cubevc.glb",
                                              "drc/cube_att.drc", "drc/knot1.drc"};
 inline const char* const kMeshesWithoutCdt[] = {"stl_ascii/gearwheel_ascii.stl", "stl_binary/thingi_1706459.stl"};
+
+// Schönhardt's twisted prism (no tetrahedralization without Steiner points) as an OFF file in dir.
+inline fs::path write_schonhardt(const TempDir& dir, const std::string& name = "schonhardt.off") {
+  const fs::path file = dir.path() / name;
+  io::write_surface(file, fixtures::twisted_prism(0.5), io::Format::Off);
+  return file;
+}
 
 // Skips, saying why, when the shared data is not there (DESIGN.md: CI has shared/ beside the checkout).
 #define SWEEPCDT_REQUIRE_SHARED_DATA()                                                          \

@@ -158,19 +158,6 @@ TEST(CliMesh, UnwritableOutputExitsFiveAndLeavesNothing) {
   EXPECT_TRUE(batch.says("cannot create the output folder")) << batch.out;
 }
 
-// Schönhardt's twisted prism has no tetrahedralization without Steiner points.
-fs::path write_schonhardt(const TempDir& dir) {
-  const Plc<3> prism = fixtures::twisted_prism(0.5);
-  std::string off = "OFF\n6 8 0\n";
-  char buf[128];
-  for (uint32_t i = 0; i < 6; ++i) {
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", prism.point(i)[0], prism.point(i)[1], prism.point(i)[2]);
-    off += buf;
-  }
-  for (std::size_t j = 0; j < 8; ++j)
-    off += "3 " + std::to_string(prism.simplex(j)[0]) + " " + std::to_string(prism.simplex(j)[1]) + " " + std::to_string(prism.simplex(j)[2]) + "\n";
-  return dir.write("schonhardt.off", off);
-}
 
 TEST(CliMesh, SchonhardtPrismHasNoCdtWithoutSteinerPoints) {
   TempDir dir;

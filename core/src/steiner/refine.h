@@ -16,9 +16,10 @@
 //   (Step 1 uses the incremental construction of delaunay3.h: the same triangulation as the sweep.)
 // Then each facet is flipped to its own 2D CDT (facet_flips.h) and cdt() triangulates the result.
 //
-// Exactness: a split point is computed in floating point, so it lies on its segment only as closely
-// as rounding allows (each coordinate within half an ulp of a point of the segment); the refined PLC
-// is checked exactly, and the CDT is exactly that of the refined PLC.
+// Exactness: a split point is computed in floating point (sweepcdt/steiner_point.h), so it lies on its
+// segment only to within a few units of rounding; the refined PLC is checked exactly, and the CDT is
+// exactly that of the refined PLC — or NoCdtError, when rounding folded a facet so that the theorem's
+// premise fails (seen on thingi_1706459.stl).
 #pragma once
 #include <array>
 #include <cstdint>

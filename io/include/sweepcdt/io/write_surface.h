@@ -5,11 +5,16 @@
 #include <filesystem>
 
 #include "sweepcdt/io/soup.h"
+#include "sweepcdt/plc.h"
 
 namespace sweepcdt::io {
 
 // `format` must be one of Off, StlAscii, StlBinary, Obj, Ply (binary little-endian, double
 // coordinates). Throws InputError (Unreadable) if the file cannot be written, Unsupported for others.
 void write_surface(const std::filesystem::path& file, const Soup& soup, Format format);
+
+// The triangles of a PLC (its points and simplices; notations and tags are not written), e.g. to
+// hand the same surface to another mesher.
+void write_surface(const std::filesystem::path& file, const Plc<3>& plc, Format format);
 
 }  // namespace sweepcdt::io
