@@ -36,7 +36,8 @@ std::unordered_set<uint64_t> delaunay_edges(const std::vector<double>& coordinat
 class Refiner {
  public:
   Refiner(const Plc<3>& input, const Options& options)
-      : options_(options), groups_(group_facets(input, options.facets)), input_region_seeds_(input.region_seeds) {
+      : options_(options), groups_(group_facets(input, options.facets)) {
+    r_.plc.region_seeds = input.region_seeds;
     r_.num_input_points = static_cast<uint32_t>(input.num_points());
     r_.facets = groups_.num_facets();
     points_ = input.points;
@@ -52,7 +53,6 @@ class Refiner {
     r_.flips = flip_facets_to_cdt({points_, tris_, facet, groups_.segments, on_segment_});
 
     r_.plc.points = std::move(points_);
-    r_.plc.region_seeds = input_region_seeds_;
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
       r_.plc.exterior.push_back(groups_.exterior[original_[t]]);
@@ -101,7 +101,6 @@ class Refiner {
     points_.insert(points_.end(), x, x + 3);
     on_segment_.push_back(!is_input(a) ? on_segment_[a] : !is_input(b) ? on_segment_[b] : std::array<uint32_t, 2>{a, b});
     r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
-    r_.steiner_segment.push_back(on_segment_.back());
     groups_.segments.erase(key);
     groups_.segments.insert(edge_key(a, m));
     groups_.segments.insert(edge_key(m, b));
@@ -140,7 +139,6 @@ class Refiner {
 
   const Options& options_;
   FacetGroups groups_;
-  std::vector<RegionSeed<3>> input_region_seeds_;
   RefinedPlc r_;
   std::vector<double> points_;
   std::vector<std::array<uint32_t, 2>> on_segment_;

@@ -21,7 +21,6 @@
 // exactly that of the refined PLC — or NoCdtError, when rounding folded a facet so that the theorem's
 // premise fails (seen on thingi_1706459.stl).
 #pragma once
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -33,7 +32,6 @@ struct RefinedPlc {
   Plc<3> plc;                         // the input's points first, then the Steiner points
   uint32_t num_input_points = 0;
   std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding its segment
-  std::vector<std::array<uint32_t, 2>> steiner_segment;  // per Steiner point: its input segment
   std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
                                       // coplanar facets: the facet's first input triangle)
   uint64_t rounds = 0, facets = 0, flips = 0;
