@@ -1,5 +1,5 @@
 // Times cdt() with Steiner points on a surface file and prints one JSON line; optionally writes the
-// welded surface as OFF so bench/run_steiner.py can hand the same input to TetGen.
+// welded surface as OFF so bench/run_steiner.sh can hand the same input to TetGen.
 //
 //   steiner_bench FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]
 #include <chrono>

@@ -6,8 +6,9 @@
 //    two from an input vertex, or at a + (b - a)/2) in double arithmetic, so they lie on the edge
 //    only up to rounding — an exact "point on triangle" test would reject correct meshes, and any
 //    tolerance would be a guess. Instead each Steiner point (in order) must be reproduced bit for
-//    bit by that construction from two points already known to lie on one edge of an input triangle.
-//    Points exactly coplanar with their triangle are counted separately.
+//    bit by that construction from two points already known to lie on one edge of an input triangle
+//    — or, for the few points that split a fold inside a triangle (core/src/steiner/refine.cpp), on
+//    that triangle. Points exactly coplanar with their triangle are counted separately.
 // 3. The refined surface: the boundary facets of the tetrahedra (facets of one tetrahedron). Each
 //    must have all three vertices on one input triangle (2.), with the tetrahedron on the side that
 //    the input's exterior notation says is inside, and every input triangle must be covered by as
@@ -246,20 +247,23 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh) {
       const auto& known = on[j];
       bool found = false;
       uint8_t edges = 0;
-      for (std::size_t a = 0; a < known.size() && !found; ++a)
-        for (std::size_t b = 0; b < known.size() && !found; ++b)
-          if (known[a].point < known[b].point && (known[a].edges & known[b].edges) &&
-              is_split_point(ps, mesh.points.data() + 3 * std::size_t{known[a].point}, known[a].point < n,
-                             mesh.points.data() + 3 * std::size_t{known[b].point}, known[b].point < n)) {
-            found = true;
-            edges = known[a].edges & known[b].edges;
-          }
+      // An edge's split point; else, second pass, a split point inside the triangle (a fold that
+      // rounding made a segment: core/src/steiner/refine.cpp), of two of its points on no common edge.
+      for (int pass = 0; pass < 2 && !found; ++pass)
+        for (std::size_t a = 0; a < known.size() && !found; ++a)
+          for (std::size_t b = 0; b < known.size() && !found; ++b)
+            if (known[a].point < known[b].point && (pass == 1 || (known[a].edges & known[b].edges)) &&
+                is_split_point(ps, mesh.points.data() + 3 * std::size_t{known[a].point}, known[a].point < n,
+                               mesh.points.data() + 3 * std::size_t{known[b].point}, known[b].point < n)) {
+              found = true;
+              edges = known[a].edges & known[b].edges;
+            }
       if (!found) continue;
       on[j].push_back({s, edges});
       triangles_of[s].push_back(j);
     }
     if (triangles_of[s].empty()) {
-      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the split point of two points on one input edge");
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the split point of two points of one input triangle");
       continue;
     }
     const uint32_t* t = input.simplex(triangles_of[s].front());

@@ -151,7 +151,7 @@ TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   const CliRun r = check(input, tampered, dir);
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
-  EXPECT_TRUE(r.says("is not the split point of two points on one input edge")) << r.out;
+  EXPECT_TRUE(r.says("is not the split point of two points of one input triangle")) << r.out;
 }
 
 // Nested shells: a box with a box-shaped cavity (given outward: the importer reverses it) and a

@@ -63,8 +63,8 @@ inline fs::path shared_data() { return fs::path(SWEEPCDT_SHARED_DATA); }
 inline const char* const kMeshesWithCdt[] = {"off/icosahedron.off", "off/femur.off", "stl_ascii/t13_data_ascii.stl",
                                              "stl_binary/spot.stl", "stl_binary/torus.stl", "gltf/Box.gltf",
                                              "gltf/two_objects_inverse_materials.gltf", "glb/moon.glb", "glb/cubevc.glb",
-                                             "drc/cube_att.drc", "drc/knot1.drc"};
-inline const char* const kMeshesWithoutCdt[] = {"stl_ascii/gearwheel_ascii.stl", "stl_binary/thingi_1706459.stl"};
+                                             "drc/cube_att.drc", "drc/knot1.drc", "stl_binary/thingi_1706459.stl"};
+inline const char* const kMeshesWithoutCdt[] = {"stl_ascii/gearwheel_ascii.stl"};
 
 // Schönhardt's twisted prism (no tetrahedralization without Steiner points) as an OFF file in dir.
 inline fs::path write_schonhardt(const TempDir& dir, const std::string& name = "schonhardt.off") {

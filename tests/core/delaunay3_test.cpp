@@ -255,6 +255,51 @@ TEST(Delaunay3, Throws) {
   EXPECT_EQ(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}).size(), 1u);
 }
 
+// DelaunayEdges (kept between Steiner rounds): after each batch of appended points, has_edge agrees
+// with the edges of the triangulation built from scratch, for every pair of points; and a pair that
+// may_have_changed calls unchanged really is (an edge exactly when it was one before the batch).
+// Random and grid points (ties decided by the perturbation).
+std::set<std::pair<uint32_t, uint32_t>> edges_of(const std::vector<double>& points) {
+  std::set<std::pair<uint32_t, uint32_t>> edges;
+  for (const Tet& t : detail::delaunay_tetrahedra(points))
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.insert(std::minmax(t[i], t[j]));
+  return edges;
+}
+
+void expect_incremental_edges(const std::vector<double>& all, const std::string& what) {
+  const std::size_t n = all.size() / 3;
+  std::vector<double> points(all.begin(), all.begin() + 3 * (n / 4));
+  detail::DelaunayEdges incremental(points);
+  std::set<std::pair<uint32_t, uint32_t>> before = edges_of(points);
+  int unchanged = 0;
+  for (const std::size_t end : {n / 2, n / 2 + 1, 3 * n / 4, n}) {
+    points.insert(points.end(), all.begin() + points.size(), all.begin() + 3 * end);
+    incremental.insert_new_points();
+    const auto after = edges_of(points);
+    for (uint32_t a = 0; a < end; ++a)
+      for (uint32_t b = a + 1; b < end; ++b) {
+        const bool edge = after.count({a, b}) > 0;
+        ASSERT_EQ(incremental.has_edge(a, b), edge) << what << ": " << a << " " << b << " with " << end << " points";
+        ASSERT_EQ(incremental.has_edge(b, a), edge) << what;
+        if (!incremental.may_have_changed(a, b)) {
+          ++unchanged;
+          ASSERT_EQ(before.count({a, b}) > 0, edge) << what << ": " << a << " " << b << " changed unnoticed";
+        }
+      }
+    before = after;
+  }
+  EXPECT_GT(unchanged, 0) << what << ": may_have_changed never said no, so it was not tested";
+}
+
+TEST(Delaunay3, EdgesKeptUpToDateAsPointsAreAdded) {
+  for (uint64_t seed = 0; seed < 4; ++seed) expect_incremental_edges(random_points(160, seed), "random " + std::to_string(seed));
+  for (uint64_t seed = 0; seed < 4; ++seed) {
+    std::mt19937_64 rng(500 + seed);
+    expect_incremental_edges(fixtures::distinct_grid_points<3>(rng, 120, 4), "grid " + std::to_string(seed));
+  }
+}
+
 // Not a timing assertion: prints both times for the report (bench/sweep_bench cube-points 33000).
 TEST(Delaunay3, Large33kAgainstSweep) {
   const std::vector<double> points = random_points(33000, 2024);

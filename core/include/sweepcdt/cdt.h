@@ -53,11 +53,12 @@ struct Progress {
 //   D = 3: Auto splits the segments (edges of the input facets) that are not Delaunay — with the
 //          concentric-shell rule that protects small input angles — until every segment is an edge of
 //          the (perturbed) Delaunay triangulation of all points; each facet is then re-triangulated by
-//          its own 2D CDT. Shewchuk's CDT theorem says the refined PLC has a CDT when its points lie
-//          exactly on the segments; Steiner points are the rounded results of a few floating-point
-//          operations (sweepcdt/steiner_point.h), so they lie on their segments only to within a few
-//          units of rounding, and a facet folded by that rounding can still leave the refined PLC
-//          without a CDT (NoCdtError then). core/src/steiner/refine.h has the details.
+//          its own 2D CDT. Steiner points are the rounded results of a few floating-point operations
+//          (sweepcdt/steiner_point.h): they lie on their segments to within a few units of rounding,
+//          and the facet edges from them are slight folds; folds that are not Delaunay are split too
+//          (a few points inside facets), so Shewchuk's CDT theorem holds for the refined PLC exactly
+//          as computed. Limits (points, rounds) make a hopeless input fail with NoCdtError instead of
+//          running away. core/src/steiner/refine.h has the details.
 //   D >= 4: not implemented; Auto behaves as None (NoCdtError when no CDT exists).
 enum class SteinerMode {
   None,  // the PLC as given: NoCdtError when it has no CDT (paper §2)

@@ -107,10 +107,50 @@ class Delaunay3 {
   explicit Delaunay3(const std::vector<double>& points) : points_(points) {}
 
   std::vector<Tet> run(const std::vector<uint32_t>& order) {
+    build(order);
+    return finite_tets();
+  }
+
+  void build(const std::vector<uint32_t>& order) {
+    vertex_tet_.assign(points_.size() / 3, kInfinite);
+    touched_round_.assign(points_.size() / 3, round_);
     const std::vector<uint32_t> rest = start(order);
     cells_.reserve(7 * rest.size() + 16);
     for (const uint32_t id : rest) insert(id);
-    return finite_tets();
+  }
+
+  // Inserts the points with ids from vertex_tet_.size() on (appended to the points since).
+  void insert_new_points() {
+    const std::size_t first = vertex_tet_.size(), n = points_.size() / 3;
+    if (n == first) return;  // nothing changed: keep what touched() says
+    vertex_tet_.resize(n, kInfinite);
+    first_new_ = static_cast<uint32_t>(first);
+    ++round_;
+    touched_round_.resize(n, round_);
+    const std::vector<double> added(points_.begin() + 3 * first, points_.end());
+    for (const uint32_t k : brio_order(added)) insert(static_cast<uint32_t>(first + k));
+  }
+
+  // Whether a tetrahedron at v was destroyed (or v was inserted) by the last build/insert_new_points:
+  // an edge between two vertices that were not both touched is still there, or still missing.
+  bool touched(uint32_t v) const { return touched_round_[v] == round_; }
+  bool inserted_last(uint32_t v) const { return v >= first_new_; }
+
+  // Whether ab is an edge: a search of the tetrahedra around a (ghosts included).
+  bool has_edge(uint32_t a, uint32_t b) {
+    stamp_ += 2;
+    star_.assign(1, vertex_tet_[a]);
+    marks_[star_[0]] = stamp_;
+    for (std::size_t head = 0; head < star_.size(); ++head) {
+      const Tet& v = cells_[star_[head]].v;
+      for (int i = 0; i < 4; ++i) {
+        if (v[i] == b) return true;
+        if (v[i] == a) continue;
+        const uint32_t u = neighbor(star_[head], i);  // shares the facet without v[i], which holds a
+        if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u);
+      }
+    }
+    return false;
   }
 
  private:
@@ -213,6 +253,8 @@ class Delaunay3 {
   // Storage: flat arrays, freed slots reused.
 
   uint32_t new_tet(const Tet& v) {
+    for (const uint32_t id : v)
+      if (id != kInfinite) vertex_tet_[id] = static_cast<uint32_t>(free_.empty() ? cells_.size() : free_.back());
     uint32_t t;
     if (!free_.empty()) {
       t = free_.back();
@@ -311,6 +353,8 @@ class Delaunay3 {
 
     grow_cavity(start, p);
     for (const uint32_t c : conflicts_) {
+      for (const uint32_t v : cells_[c].v)
+        if (v != kInfinite) touched_round_[v] = round_;
       dead_[c] = 1;
       free_.push_back(c);
     }
@@ -430,6 +474,11 @@ class Delaunay3 {
   std::vector<uint32_t> marks_;
   std::vector<uint8_t> dead_;
   std::vector<uint32_t> free_;
+  std::vector<uint32_t> vertex_tet_;  // per inserted point: a live tetrahedron holding it
+  std::vector<uint32_t> star_;        // has_edge's search
+  std::vector<uint32_t> touched_round_;  // per point: the last round (insert_new_points call) touching it
+  uint32_t round_ = 0;
+  uint32_t first_new_ = 0;  // the first point of the last build/insert_new_points
   std::vector<uint32_t> conflicts_;
   std::vector<BoundaryFacet> boundary_;
   std::vector<RidgeSlot> ridge_table_;
@@ -449,6 +498,31 @@ void check_points(const std::vector<double>& points) {
 }
 
 }  // namespace
+
+struct DelaunayEdges::Impl {
+  explicit Impl(const std::vector<double>& p) : points(p), triangulation(p) {}
+  const std::vector<double>& points;
+  Delaunay3 triangulation;
+};
+
+DelaunayEdges::DelaunayEdges(const std::vector<double>& points) : impl_(std::make_unique<Impl>(points)) {
+  check_points(points);
+  impl_->triangulation.build(brio_order(points));
+}
+
+DelaunayEdges::~DelaunayEdges() = default;
+
+void DelaunayEdges::insert_new_points() {
+  check_points(impl_->points);
+  impl_->triangulation.insert_new_points();
+}
+
+bool DelaunayEdges::has_edge(uint32_t a, uint32_t b) { return impl_->triangulation.has_edge(a, b); }
+
+bool DelaunayEdges::may_have_changed(uint32_t a, uint32_t b) const {
+  const Delaunay3& t = impl_->triangulation;
+  return (t.touched(a) && t.touched(b)) || t.inserted_last(a) || t.inserted_last(b);
+}
 
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points) {
   check_points(points);

@@ -16,6 +16,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sweepcdt::detail {
@@ -30,5 +31,25 @@ std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<doubl
 // of the spatial order. For tests: the result must not depend on the order.
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra_in_order(const std::vector<double>& points,
                                                                   const std::vector<uint32_t>& order);
+
+// The same triangulation kept between Steiner rounds: points appended to the caller's vector are
+// inserted, and edges looked up, without rebuilding it (refine.cpp asks once per segment per round).
+class DelaunayEdges {
+ public:
+  // Triangulates `points`, which must outlive this object; same requirements as above.
+  explicit DelaunayEdges(const std::vector<double>& points);
+  ~DelaunayEdges();
+  // Inserts the points appended to `points` since the last call (or the construction), if any.
+  void insert_new_points();
+  // Whether ab is an edge of the triangulation (a and b inserted points).
+  bool has_edge(uint32_t a, uint32_t b);
+  // False when ab is an edge exactly when it was before the last insert_new_points: neither end is
+  // new and some end lost no tetrahedron (every new edge has a new end). All true after construction.
+  bool may_have_changed(uint32_t a, uint32_t b) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace sweepcdt::detail

@@ -9,6 +9,7 @@
 #include "delaunay3.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
+#include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/steiner_point.h"
 
 namespace sweepcdt::detail {
@@ -20,18 +21,6 @@ using Triangle = std::array<uint32_t, 3>;
 // number of points it needs grows with the ratio of the longest segment to the smallest gap).
 constexpr uint64_t kMaxRounds = 200;
 std::size_t steiner_budget(std::size_t input_points) { return 20 * input_points + 10000; }
-
-// The edges of the perturbed Delaunay triangulation of the points (no constraints; the incremental
-// construction gives the same unique triangulation as the sweep sphere, much faster).
-std::unordered_set<uint64_t> delaunay_edges(const std::vector<double>& coordinates) {
-  const auto tetrahedra = delaunay_tetrahedra(coordinates);
-  std::unordered_set<uint64_t> edges;
-  edges.reserve(tetrahedra.size() * 2);
-  for (const auto& s : tetrahedra)
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) edges.insert(edge_key(s[i], s[j]));
-  return edges;
-}
 
 class Refiner {
  public:
@@ -47,17 +36,16 @@ class Refiner {
   }
 
   RefinedPlc run() {
-    if (options_.steiner == SteinerMode::Auto) split_until_delaunay();
-    std::vector<uint32_t> facet(tris_.size());
-    for (std::size_t t = 0; t < tris_.size(); ++t) facet[t] = groups_.facet[original_[t]];
-    r_.flips = flip_facets_to_cdt({points_, tris_, facet, groups_.segments, on_segment_});
-
+    if (options_.steiner == SteinerMode::Auto)
+      split_until_delaunay();  // flips the facets as it goes
+    else
+      flip_facets();
     r_.plc.points = std::move(points_);
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
       r_.plc.exterior.push_back(groups_.exterior[original_[t]]);
       // A coplanar facet's triangles no longer match input triangles: they carry the facet's first.
-      r_.original.push_back(options_.facets == FacetMode::Coplanar ? groups_.first_triangle[facet[t]] : original_[t]);
+      r_.original.push_back(options_.facets == FacetMode::Coplanar ? groups_.first_triangle[groups_.facet[original_[t]]] : original_[t]);
     }
     return std::move(r_);
   }
@@ -67,16 +55,16 @@ class Refiner {
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
 
   void split_until_delaunay() {
+    DelaunayEdges delaunay(points_);  // kept up to date as points are added
     for (;; ++r_.rounds) {
-      const auto delaunay = delaunay_edges(points_);
-      // Segments that are not Delaunay, each once, in triangle order (deterministic).
-      std::vector<uint64_t> split;
-      std::unordered_set<uint64_t> marked;
-      for (const Triangle& t : tris_)
-        for (int i = 0; i < 3; ++i) {
-          const uint64_t key = edge_key(t[i], t[(i + 1) % 3]);
-          if (groups_.segments.count(key) && !delaunay.count(key) && marked.insert(key).second) split.push_back(key);
-        }
+      delaunay.insert_new_points();  // the Steiner points of the last round
+      auto split = segments_not_in(delaunay);
+      if (split.empty()) {
+        // The segments are Delaunay: give each facet its 2D CDT, then make the folds that rounding
+        // left in it segments when they are not Delaunay either (see fold_edges_not_in).
+        flip_facets();
+        split = fold_edges_not_in(delaunay);
+      }
       if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
       if (split.empty()) return;
       if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
@@ -90,6 +78,60 @@ class Refiner {
     }
   }
 
+  // Segments that are not Delaunay, each once, in triangle order (deterministic). A segment checked
+  // in an earlier round and still there was Delaunay then (the others were split), so only new
+  // segments and those whose ends the new points' cavities touched need checking again.
+  std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) const {
+    std::vector<uint64_t> split;
+    std::unordered_set<uint64_t> marked;
+    for (const Triangle& t : tris_)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t a = t[i], b = t[(i + 1) % 3];
+        if (!delaunay.may_have_changed(a, b)) continue;
+        const uint64_t key = edge_key(a, b);
+        if (groups_.segments.count(key) && marked.insert(key).second && !delaunay.has_edge(a, b)) split.push_back(key);
+      }
+    return split;
+  }
+
+  // A rounded Steiner point lies a few ulps off its segment, so the triangles of one facet that meet
+  // at an edge from it are not exactly coplanar: the edge is a fold, a ridge of the refined PLC like
+  // any segment. The CDT theorem needs it strongly Delaunay too; a fold that is not would leave the
+  // refined PLC without a CDT (thingi_1706459.stl: 20 of 11787 folds). Such folds become segments —
+  // no longer flipped, split like any other — and are returned, each once, in triangle order.
+  std::vector<uint64_t> fold_edges_not_in(DelaunayEdges& delaunay) {
+    std::unordered_map<uint64_t, std::array<uint32_t, 2>> sides;  // facet-interior edge -> its two triangles
+    for (uint32_t j = 0; j < tris_.size(); ++j)
+      for (int i = 0; i < 3; ++i) {
+        const uint64_t key = edge_key(tris_[j][i], tris_[j][(i + 1) % 3]);
+        if (groups_.segments.count(key)) continue;
+        auto [it, fresh] = sides.try_emplace(key, std::array<uint32_t, 2>{j, kNone});
+        if (!fresh) it->second[1] = j;
+      }
+    std::vector<uint64_t> folds;
+    for (uint32_t j = 0; j < tris_.size(); ++j)
+      for (int i = 0; i < 3; ++i) {
+        const uint64_t key = edge_key(tris_[j][i], tris_[j][(i + 1) % 3]);
+        const auto it = sides.find(key);
+        if (it == sides.end() || it->second[0] != j || it->second[1] == kNone || delaunay.has_edge(tris_[j][i], tris_[j][(i + 1) % 3])) continue;
+        const Triangle& other = tris_[it->second[1]];
+        const uint32_t apex = other[0] != tris_[j][i] && other[0] != tris_[j][(i + 1) % 3] ? other[0]
+                              : other[1] != tris_[j][i] && other[1] != tris_[j][(i + 1) % 3] ? other[1]
+                                                                                              : other[2];
+        if (predicates::orient<3>({p(tris_[j][0]), p(tris_[j][1]), p(tris_[j][2]), p(apex)}) == predicates::Sign::Zero) continue;
+        folds.push_back(key);
+        groups_.segments.insert(key);
+        fold_segments_.insert(key);
+      }
+    return folds;
+  }
+
+  void flip_facets() {
+    std::vector<uint32_t> facet(tris_.size());
+    for (std::size_t t = 0; t < tris_.size(); ++t) facet[t] = groups_.facet[original_[t]];
+    r_.flips += flip_facets_to_cdt({points_, tris_, facet, groups_.segments, on_segment_});
+  }
+
   // The concentric-shell rule (refine.h): returns the new point's id.
   uint32_t add_split_point(uint64_t key) {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
@@ -99,11 +141,20 @@ class Refiner {
       throw NoCdtError("Steiner points: a segment is too short to split in double precision", {a, b});
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
-    on_segment_.push_back(!is_input(a) ? on_segment_[a] : !is_input(b) ? on_segment_[b] : std::array<uint32_t, 2>{a, b});
+    const bool fold = fold_segments_.count(key) > 0;
+    if (fold)  // its halves are folds too; the point is inside the facet, on no input segment
+      on_segment_.push_back({kNone, kNone});
+    else
+      on_segment_.push_back(!is_input(a) ? on_segment_[a] : !is_input(b) ? on_segment_[b] : std::array<uint32_t, 2>{a, b});
     r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
     groups_.segments.erase(key);
     groups_.segments.insert(edge_key(a, m));
     groups_.segments.insert(edge_key(m, b));
+    if (fold) {
+      fold_segments_.erase(key);
+      fold_segments_.insert(edge_key(a, m));
+      fold_segments_.insert(edge_key(m, b));
+    }
     return m;
   }
 
@@ -144,6 +195,7 @@ class Refiner {
   std::vector<std::array<uint32_t, 2>> on_segment_;
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
+  std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
 };
 
 }  // namespace

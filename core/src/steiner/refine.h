@@ -4,22 +4,23 @@
 // are the input triangles (or, with FacetMode::Coplanar, the polygons of exactly coplanar adjacent
 // triangles) and the segments are their boundary edges. Under the lifting-map perturbation of §6
 // the points are in general position for spheres, so "strongly Delaunay" becomes "an edge of the
-// perturbed Delaunay triangulation of all points", which one unconstrained sweep answers for every
-// segment at once. Rounds:
-//   1. Delaunay triangulation of the current points (sweep sphere, no constraints);
+// perturbed Delaunay triangulation of all points". Rounds:
+//   1. the Delaunay triangulation of the current points (delaunay3.h: incremental, the same unique
+//      triangulation as the sweep sphere, kept between rounds; only segments near the new points
+//      are looked up again);
 //   2. every segment that is not one of its edges is split — at a power-of-two distance from its
 //      end when exactly one end is an input vertex, at its midpoint otherwise (the concentric-shell
 //      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
 //      about it, so segments at a small angle do not split each other without end);
 //   3. the triangles holding a split segment are split at the new point (facet-interior edges are
 //      not segments: they need not be Delaunay).
-//   (Step 1 uses the incremental construction of delaunay3.h: the same triangulation as the sweep.)
-// Then each facet is flipped to its own 2D CDT (facet_flips.h) and cdt() triangulates the result.
-//
-// Exactness: a split point is computed in floating point (sweepcdt/steiner_point.h), so it lies on its
-// segment only to within a few units of rounding; the refined PLC is checked exactly, and the CDT is
-// exactly that of the refined PLC — or NoCdtError, when rounding folded a facet so that the theorem's
-// premise fails (seen on thingi_1706459.stl).
+// When every segment is Delaunay, each facet is flipped to its own 2D CDT (facet_flips.h). Folds:
+// a split point is computed in floating point (sweepcdt/steiner_point.h), so it lies on its segment
+// only to within a few units of rounding, and the triangles of a facet that meet at an edge from it
+// are then not exactly coplanar. Such an edge is a ridge of the refined PLC like a segment; when it
+// is not Delaunay it becomes a segment and the rounds go on (its split points lie inside the facet).
+// So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
+// exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -31,7 +32,7 @@ namespace sweepcdt::detail {
 struct RefinedPlc {
   Plc<3> plc;                         // the input's points first, then the Steiner points
   uint32_t num_input_points = 0;
-  std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding its segment
+  std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding it
   std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
                                       // coplanar facets: the facet's first input triangle)
   uint64_t rounds = 0, facets = 0, flips = 0;
