@@ -1,6 +1,13 @@
 // Gift-wrapping (paper §2): grow a seed simplex, then finish unfinished hyperfaces one by one, each by
 // the first vertex an expanding sphere touches (among those whose simplex's interior meets no
 // constraining facet). O(n_v n_f n_s) with the box tree pruning the n_f factor in practice.
+//
+// The visibility test of §2 ("test the visibility of each vertex from the hyperface ... against each
+// constraining (d-1)-simplex") is clean(): a vertex finishes a face only if the interior of the
+// simplex it makes meets no constraining simplex, the paper's growth rule. Whether each grown simplex
+// is constrained Delaunay (no vertex visible from its interior inside its circumsphere; if one is
+// not, there is no CDT) is checked for the whole result by validate(): locally, across every facet,
+// which for a triangulation is equivalent (the constrained Delaunay lemma).
 #include "ids_text.h"
 #include "gift_wrap.h"
 

@@ -70,7 +70,9 @@ class Refiner {
       if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
         throw NoCdtError("Steiner points: " + std::to_string(split.size()) + " segments still not Delaunay after " +
                              std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +
-                             " Steiner points, over the limit for this input (20 per input point + 10000)",
+                             " Steiner points, over the limit for this input (20 per input point + 10000); long thin "
+                             "triangles on faces that are flat only approximately need that many (faces that are exactly "
+                             "flat can be merged: --facets coplanar)",
                          {static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
