@@ -84,14 +84,17 @@ class CdtOracle {
       Shadow rows{values(shadow->beyond, s), {}};
       for (int k = 0; k < D; ++k) rows.cone[k] = values(shadow->cone[k], s);
       if (!any_positive(rows.beyond)) continue;  // int(s) is on v's closed side of aff(t)
-      if (std::any_of(rows.cone.begin(), rows.cone.end(), [](const lp::Row& r) { return !any_positive(r); }))
+      const auto misses = [](const lp::Row& r) { return !any_positive(r); };
+      if (std::any_of(rows.cone.begin(), rows.cone.end(), misses))
         continue;  // int(s) is strictly outside the cone from v through t (s is non-degenerate)
       candidates.push_back(rows);
     }
     // Fast exact exit: the centroid (the row sums, up to a positive factor) is hidden by none.
-    const bool centroid_hidden = std::any_of(candidates.begin(), candidates.end(), [](const Shadow& r) {
-      return sgn(sum(r.beyond)) > 0 && std::all_of(r.cone.begin(), r.cone.end(), [](const lp::Row& c) { return sgn(sum(c)) >= 0; });
-    });
+    const auto hides_centroid = [](const Shadow& r) {
+      const auto inside = [](const lp::Row& c) { return sgn(sum(c)) >= 0; };
+      return sgn(sum(r.beyond)) > 0 && std::all_of(r.cone.begin(), r.cone.end(), inside);
+    };
+    const bool centroid_hidden = std::any_of(candidates.begin(), candidates.end(), hides_centroid);
     if (!centroid_hidden) return Sight::Visible;
     std::vector<Shadow> relevant;  // those whose O_t does meet int(s): the others cannot matter
     for (const Shadow& rows : candidates) {
