@@ -1,6 +1,7 @@
 // Every algorithm (gift-wrapping, sweep sphere, sweep plane) equals CGAL where the answer is unique
 // (random points in general position): Constrained_Delaunay_triangulation_2 for PSLGs and polygons
-// with holes, Delaunay_triangulation_3.
+// with holes, Delaunay_triangulation_3. So does the brute-force CDT oracle in 2D, which the 3D-5D
+// tests (brute_force_cdt_test.cpp) trust.
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -13,6 +14,7 @@
 #include <random>
 #include <set>
 
+#include "brute_force_cdt.h"
 #include "sweepcdt/cdt.h"
 
 using namespace sweepcdt;
@@ -101,6 +103,31 @@ TEST(AlgorithmsEqualCgal, RandomPslgsEqualCgalCdt2) {
     const auto expected = cgal_all_faces(cgal_cdt(plc));
     for (Algorithm a : kAlgorithms) EXPECT_EQ(simplex_set(run(plc, a)), expected) << to_string(a) << " seed " << seed;
   }
+}
+
+// The oracle checks paper §1's definition by brute force; CGAL builds the CDT by incremental insertion
+// and flips: nothing shared. Few points (the oracle is O(n^4)), long segments, so occlusion matters.
+TEST(AlgorithmsEqualCgal, BruteForceCdtOracleEqualsCgalCdt2) {
+  uint64_t accepted_by_occlusion = 0;
+  for (int seed = 0; seed < 20; ++seed) {
+    std::mt19937_64 rng(500 + seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    Plc<2> plc;
+    for (int i = 0; i < 2 * 12; ++i) plc.points.push_back(u(rng));
+    std::uniform_int_distribution<uint32_t> pick(0, 11);
+    for (int tries = 0; tries < 40 && plc.num_simplices() < 4; ++tries) {
+      const uint32_t a = pick(rng), b = pick(rng);
+      if (a == b) continue;
+      plc.simplices.insert(plc.simplices.end(), {a, b});
+      if (!find_problems(plc).empty()) plc.simplices.resize(plc.simplices.size() - 2);
+    }
+    const auto reference = fixtures::brute_force_cdt<2>(plc);
+    std::set<Triangle> oracle;
+    for (const auto& s : reference.simplices) oracle.insert(Triangle(s.begin(), s.end()));
+    EXPECT_EQ(oracle, cgal_all_faces(cgal_cdt(plc))) << "seed " << seed;
+    accepted_by_occlusion += reference.counts.accepted_by_occlusion;
+  }
+  EXPECT_GE(accepted_by_occlusion, 20u) << "occlusion rarely mattered: the comparison checks little";
 }
 
 // A star-shaped outer polygon (counterclockwise), a star-shaped hole (clockwise) around the same
