@@ -51,4 +51,20 @@ inline void expect_input_error(const std::string& name, const std::string& bytes
   }
 }
 
+// Writes `text` as file `name` in `dir` and reads it with `read(path)`; expects an InputError of
+// `kind` whose message names the file and contains `where`.
+template <class Read>
+void expect_file_error(const TempDir& dir, const std::string& name, const std::string& text, InputErrorKind kind,
+                       const std::string& where, Read read) {
+  const auto file = dir.write(name, text);
+  try {
+    read(file);
+    ADD_FAILURE() << name << " was accepted:\n" << text;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << "expected '" << where << "' in: " << e.what();
+  }
+}
+
 }  // namespace sweepcdt::io::testing

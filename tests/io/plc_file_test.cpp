@@ -30,15 +30,7 @@ Plc<D> read_as(const std::filesystem::path& file) {
 }
 
 void expect_error(const TempDir& dir, const std::string& name, const std::string& text, InputErrorKind kind, const std::string& where) {
-  const auto file = dir.write(name, text);
-  try {
-    read_plc_file(file);
-    ADD_FAILURE() << name << " was accepted:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.kind(), kind) << e.what();
-    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << "expected '" << where << "' in: " << e.what();
-  }
+  testing::expect_file_error(dir, name, text, kind, where, [](const std::filesystem::path& file) { read_plc_file(file); });
 }
 
 mpq_class q(double x) { return mpq_class(x); }

@@ -185,15 +185,7 @@ TEST(VolumeMeshWrite, UntaggedBoundaryAndEmptyMeshRoundTrip) {
 
 // Reads `text` as `name`: an InputError of `kind` whose message names the file and says `where`.
 void expect_error(const TempDir& dir, const std::string& name, const std::string& text, InputErrorKind kind, const std::string& where) {
-  const auto file = dir.write(name, text);
-  try {
-    read_volume_mesh(file);
-    ADD_FAILURE() << name << " was accepted:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.kind(), kind) << e.what();
-    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << "expected '" << where << "' in: " << e.what();
-  }
+  testing::expect_file_error(dir, name, text, kind, where, [](const std::filesystem::path& file) { read_volume_mesh(file); });
 }
 
 TEST(VolumeMeshRead, MalformedMedit) {

@@ -23,13 +23,6 @@ ExteriorSide flipped(ExteriorSide side) {
   return side;
 }
 
-uint32_t third_vertex(const std::array<uint32_t, 3>& t, uint64_t key) {
-  const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
-  for (uint32_t v : t)
-    if (v != a && v != b) return v;
-  return kNone;
-}
-
 uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;

@@ -20,6 +20,14 @@ inline uint64_t edge_key(uint32_t a, uint32_t b) {
   return (uint64_t{a} << 32) | b;
 }
 
+// The vertex of triangle t that is not on edge `key` (an edge of t).
+inline uint32_t third_vertex(const std::array<uint32_t, 3>& t, uint64_t key) {
+  const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+  for (uint32_t v : t)
+    if (v != a && v != b) return v;
+  return kNone;
+}
+
 struct FacetGroups {
   std::vector<std::array<uint32_t, 3>> triangles;  // the input's triangles, oriented as their facet
   std::vector<ExteriorSide> exterior;              // per triangle, after re-orientation

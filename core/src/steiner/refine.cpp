@@ -116,10 +116,7 @@ class Refiner {
         const uint64_t key = edge_key(tris_[j][i], tris_[j][(i + 1) % 3]);
         const auto it = sides.find(key);
         if (it == sides.end() || it->second[0] != j || it->second[1] == kNone || delaunay.has_edge(tris_[j][i], tris_[j][(i + 1) % 3])) continue;
-        const Triangle& other = tris_[it->second[1]];
-        const uint32_t apex = other[0] != tris_[j][i] && other[0] != tris_[j][(i + 1) % 3] ? other[0]
-                              : other[1] != tris_[j][i] && other[1] != tris_[j][(i + 1) % 3] ? other[1]
-                                                                                              : other[2];
+        const uint32_t apex = third_vertex(tris_[it->second[1]], key);
         if (predicates::orient<3>({p(tris_[j][0]), p(tris_[j][1]), p(tris_[j][2]), p(apex)}) == predicates::Sign::Zero) continue;
         folds.push_back(key);
         groups_.segments.insert(key);
