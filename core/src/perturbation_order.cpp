@@ -2,6 +2,7 @@
 #include "sweepcdt/perturbation_order.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace sweepcdt {
@@ -9,7 +10,8 @@ namespace {
 
 constexpr int kLexicographicOrders = 4;  // orders 2..5: the sign patterns of axes 1 and 2
 
-// SplitMix64 (Steele, Lea, Flood 2014): the same numbers on every platform and standard library.
+// SplitMix64 (Steele, Lea, Flood 2014, with the constants of Vigna's splitmix64.c): the same numbers
+// on every platform and standard library.
 class SplitMix64 {
  public:
   explicit SplitMix64(uint64_t seed) : state_(seed) {}
@@ -37,7 +39,9 @@ std::vector<uint32_t> vertices_in_order(const Plc<D>& plc, int order) {
     std::stable_sort(v.begin(), v.end(), [&](uint32_t a, uint32_t b) { return incident[a] > incident[b]; });
   } else if (order >= 2 && order < 2 + kLexicographicOrders) {
     // Exact comparisons of the coordinates; the PLC has no two equal points (check()), and ties
-    // left by an unchecked one keep the id order.
+    // left by an unchecked one keep the id order. A NaN would break the sort's strict weak order:
+    // an unchecked PLC with one keeps the ids.
+    if (!std::all_of(plc.points.begin(), plc.points.end(), [](double x) { return std::isfinite(x); })) return v;
     const int flips = order - 2;  // bit a-1: axis a (a = 1, 2) descending
     std::stable_sort(v.begin(), v.end(), [&](uint32_t a, uint32_t b) {
       for (int axis = 0; axis < D; ++axis) {
