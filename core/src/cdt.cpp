@@ -3,12 +3,18 @@
 // triangulation.
 #include "sweepcdt/cdt.h"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
+#include <string>
 
 #include "gift_wrap.h"
 #include "regions.h"
+#include "relabel.h"
 #include "steiner/refine.h"
 #include "sweep/sweep_cdt.h"
+#include "sweepcdt/perturbation_order.h"
+#include "sweepcdt/predicates/stats.h"
 #include "sweepcdt/validate.h"
 
 namespace sweepcdt {
@@ -73,16 +79,10 @@ Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStati
   return tri;
 }
 
-}  // namespace
-
+// One run on a checked PLC, perturbed by vertex id: (Steiner points or coplanar facets,) the
+// algorithm, neighbours, regions, validate().
 template <int D>
-Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangulated) {
-  CdtStatistics local;
-  CdtStatistics& stats = options.statistics ? *options.statistics : local;
-  stats = {};
-  Stopwatch clock;
-  check(plc);
-  stats.seconds_check = clock.lap();
+Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock, Plc<D>* triangulated) {
   if constexpr (D == 3) {
     if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
       detail::RefinedPlc refined = detail::refine(plc, options);
@@ -105,6 +105,80 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   Triangulation<D> tri = triangulate(plc, options, stats, clock);
   if (triangulated) *triangulated = plc;
   return tri;
+}
+
+// The same run perturbed in the order `rank` (paper §6): on the PLC with vertex v renamed rank[v]
+// (relabel.h), its result renamed back.
+template <int D>
+Triangulation<D> run_in_order(const Plc<D>& plc, const std::vector<uint32_t>& rank, const Options& options, CdtStatistics& stats,
+                              Stopwatch& clock, Plc<D>* triangulated) {
+  Triangulation<D> tri = run(detail::relabeled(plc, rank), options, stats, clock, triangulated);
+  detail::restore_ids(tri, rank);
+  if (triangulated) detail::restore_ids(*triangulated, rank);
+  tri.perturbation_rank = rank;
+  return tri;
+}
+
+// Paper §6: "it is possible that such a triangulation does not exist, even if the unperturbed points
+// have a CDT. The order in which the vertices are perturbed can determine whether or not a
+// triangulation is discovered." When the PLC is triangulated as given and the run by vertex id finds
+// no CDT, the next orders of perturbation_order.h are tried — but only while the failed runs met a
+// cospherical tie (predicates/stats.h): a run that decided every sphere test without the
+// perturbation decided nothing an order could change. At most kPerturbationOrders runs: each is a
+// full run, and a PLC with ties but no CDT (a cospherical prism split Schönhardt's way, most real
+// surfaces that need Steiner points) costs that many; 8 leaves room for the structured orders 0-5
+// and two pseudo-random ones. The first run's error is reported, in the caller's ids.
+template <int D>
+Triangulation<D> run_with_retries(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
+                                  Plc<D>* triangulated) {
+  const auto ties = [] { return predicates::perturbation_ties_on_this_thread(); };
+  uint64_t ties_before = ties();
+  std::optional<NoCdtError> first;
+  stats.perturbation_orders = 1;
+  try {
+    return run(plc, options, stats, clock, triangulated);
+  } catch (const NoCdtError& e) {
+    first = e;
+  }
+  const bool as_given = !(D == 3 && options.steiner == SteinerMode::Auto);  // Auto changes the PLC instead
+  std::vector<std::vector<uint32_t>> tried{perturbation_rank(plc, 0)};
+  for (int order = 1; as_given && order < kPerturbationOrders && ties() != ties_before; ++order) {
+    std::vector<uint32_t> rank = perturbation_rank(plc, order);
+    if (std::find(tried.begin(), tried.end(), rank) != tried.end()) continue;  // e.g. few points
+    tried.push_back(rank);
+    ++stats.perturbation_orders;
+    Options in_order = options;
+    if (options.progress)
+      in_order.progress = [&](const Progress& p) {
+        const std::string phase = std::string(p.phase) + " (perturbation order " + std::to_string(order) + ")";
+        return options.progress({phase.c_str(), p.done, p.total});
+      };
+    ties_before = ties();
+    try {
+      Triangulation<D> tri = run_in_order(plc, rank, in_order, stats, clock, triangulated);
+      stats.perturbation_order = static_cast<uint32_t>(order);
+      return tri;
+    } catch (const NoCdtError&) {
+      // not under this order either: the next one, if this run met a tie
+    }
+  }
+  if (stats.perturbation_orders == 1) throw *first;
+  throw NoCdtError(std::string(first->what()) + " (and no CDT under any of the " + std::to_string(stats.perturbation_orders) +
+                       " perturbation orders tried, paper §6)",
+                   first->witness());
+}
+
+}  // namespace
+
+template <int D>
+Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangulated) {
+  CdtStatistics local;
+  CdtStatistics& stats = options.statistics ? *options.statistics : local;
+  stats = {};
+  Stopwatch clock;
+  check(plc);
+  stats.seconds_check = clock.lap();
+  return run_with_retries(plc, options, stats, clock, triangulated);
 }
 
 template <int D>

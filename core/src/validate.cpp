@@ -88,7 +88,15 @@ class Validator {
     require(tri_.num_points() >= tri_.num_input_points &&
                 tri_.steiner_on.size() == tri_.num_points() - tri_.num_input_points,
             "steiner_on: one entry per Steiner point expected");
+    const auto& rank = tri_.perturbation_rank;
+    require(rank.empty() || rank.size() == tri_.num_points(), "perturbation_rank: one entry per point expected");
     if (!ok) return false;
+    std::vector<char> ranked(rank.size(), 0);
+    for (const uint32_t r : rank)
+      if (r >= rank.size() || ranked[r]++) {
+        fail("shape", "perturbation_rank is not a permutation of the point ids");
+        return false;
+      }
     if (!std::equal(plc_.points.begin(), plc_.points.end(), tri_.points.begin()))
       fail("points", "the input points are not preserved exactly as the first num_input_points points");
     return true;
@@ -365,6 +373,12 @@ class Validator {
     }
   }
 
+  // Point v as the perturbation sees it: ordered by tri.perturbation_rank when cdt() had to try
+  // another order (paper §6, sweepcdt/perturbation_order.h), else by id.
+  predicates::Vertex perturbed(uint32_t v) const {
+    return {tri_.point(v), tri_.perturbation_rank.empty() ? v : tri_.perturbation_rank[v]};
+  }
+
   // Paper §1/§6: with the constraints present, a triangulation whose unconstrained interior facets
   // are all locally Delaunay (perturbed) is the CDT.
   void locally_delaunay() {
@@ -373,9 +387,9 @@ class Validator {
       const auto& a = facets_[g.begin];
       const auto& b = facets_[g.begin + 1];
       predicates::Vertices<D + 1> s;
-      for (int i = 0; i <= D; ++i) s[i] = {tri_.point(tri_.simplex(a.simplex)[i]), tri_.simplex(a.simplex)[i]};
+      for (int i = 0; i <= D; ++i) s[i] = perturbed(tri_.simplex(a.simplex)[i]);
       const uint32_t q = apex(b);
-      if (predicates::inside_circumsphere<D>(s, {tri_.point(q), q}))
+      if (predicates::inside_circumsphere<D>(s, perturbed(q)))
         fail("locally-delaunay", facet_text(g) + " is not locally Delaunay: point " + n(q) + " is inside the circumsphere of " +
                                      simplex_text(a.simplex));
     }

@@ -8,6 +8,7 @@
 #include "exit_codes.h"
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/volume_mesh.h"
+#include "sweepcdt/perturbation_order.h"
 #include "usage.h"
 #include "verify_mesh.h"
 
@@ -69,12 +70,16 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
              "  cannot be exactly the CDT of its input; write .mesh, .vtu, .msh or .node to check exactly\n";
     return kNotValid;
   }
-  if (!quiet)
-    out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the input triangles, covering them;\n"
-        << (!v.file_boundary ? "       (the file lists no boundary triangles);\n"
-            : v.file_tags    ? "       the file's boundary triangles are those, oriented outward, tagged with their input triangle;\n"
-                             : "       the file's boundary triangles are those, oriented outward (the format has no tags);\n")
-        << "       validate(): topology, orientation, constraints, domain, every interior facet locally Delaunay\n";
+  if (quiet) return kOk;
+  out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the input triangles, covering them;\n"
+      << (!v.file_boundary ? "       (the file lists no boundary triangles);\n"
+          : v.file_tags    ? "       the file's boundary triangles are those, oriented outward, tagged with their input triangle;\n"
+                           : "       the file's boundary triangles are those, oriented outward (the format has no tags);\n")
+      << "       validate(): topology, orientation, constraints, domain, every interior facet locally Delaunay";
+  if (v.perturbation_order > 0)
+    out << "\n       under perturbation order " << v.perturbation_order << " (" << perturbation_order_name(v.perturbation_order)
+        << "; the vertex-id order has no CDT here, paper §6)";
+  out << "\n";
   return kOk;
 }
 

@@ -109,6 +109,9 @@ std::string summary_of(const FileResult& r) {
   const char* what = r.dimension == 2 ? " triangles" : r.dimension == 3 ? " tetrahedra" : " simplices";
   std::string s = std::to_string(r.simplices) + what;
   if (r.dimension == 3) s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
+  // Paper §6: the vertex-id perturbation left the PLC without a CDT; say which order gave one.
+  if (r.cdt.perturbation_order > 0)
+    s += ", perturbation order " + std::to_string(r.cdt.perturbation_order) + " (" + perturbation_order_name(static_cast<int>(r.cdt.perturbation_order)) + ")";
   if (r.validated) s += ", checked";
   return s + buf;
 }

@@ -53,8 +53,11 @@ nlohmann::ordered_json file_json(const FileResult& r) {
     j["queue_pops"] = r.cdt.queue_pops;
     j["stale_pops"] = r.cdt.stale_pops;
     j["drop_moves"] = r.cdt.drop_moves;
+    j["perturbation_order"] = r.cdt.perturbation_order;  // paper §6: 0 = vertex ids (sweepcdt/perturbation_order.h)
     j["validated"] = r.validated;
   }
+  // Runs made, one per perturbation order tried (paper §6); also when none gave a CDT.
+  if (r.computed || r.code == kNoCdt) j["perturbation_orders"] = r.cdt.perturbation_orders;
   nlohmann::ordered_json s;
   s["read"] = r.seconds_read;
   if (r.computed) {

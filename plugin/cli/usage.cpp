@@ -40,6 +40,7 @@ std::string mesh_help() {
          "  --algorithm A       sweep-sphere (default), sweep-plane, giftwrap (slow reference)\n"
          "  --steiner auto|none auto (default): add Steiner points on the surface where it has no CDT as\n"
          "                      given; none: the surface exactly, or exit 4 naming the obstruction\n"
+         "                      (exactly cospherical vertices: up to 8 perturbation orders are tried)\n"
          "  --facets MODE       triangles (default): every input triangle is a facet of its own;\n"
          "                      coplanar: edge-adjacent, exactly coplanar triangles form one polygonal\n"
          "                      facet, re-triangulated by its 2D CDT (fewer Steiner points on CAD meshes;\n"
@@ -78,7 +79,8 @@ std::string check_help() {
          "  - the file's boundary triangles (if it lists them) are exactly those, outward, tagged\n"
          "    with their input triangle (if the format stores tags);\n"
          "  - validate(): tetrahedra positively oriented and properly connected, the domain covered\n"
-         "    exactly (volumes), every constraint present, every interior facet locally Delaunay.\n"
+         "    exactly (volumes), every constraint present, every interior facet locally Delaunay\n"
+         "    (without Steiner points: under the first of the perturbation orders mesh tries).\n"
          "Exit 0: valid; 6: not valid (the first problems are printed); 3: INPUT or OUTPUT unreadable.\n"
          "\n" +
          exit_codes_text();

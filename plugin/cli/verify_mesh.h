@@ -21,6 +21,7 @@ struct MeshVerification {
   bool file_boundary = false;           // the file lists boundary triangles (checked against those)
   bool file_tags = false;               // ... with tags (input triangle ids; checked too)
   bool validated = false;               // validate() ran (all earlier checks passed)
+  int perturbation_order = 0;           // the order validate() passed under (paper §6; 0 = vertex ids)
   bool ok() const { return total_problems == 0; }
 };
 

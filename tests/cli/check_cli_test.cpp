@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.h"
@@ -173,6 +174,43 @@ TEST(CliCheck, CavityAndNestedBody) {
   EXPECT_EQ(stats["input_triangles"], 36);
   EXPECT_EQ(stats["regions"], 2) << "the shell between box and cavity, and the body inside";
   EXPECT_TRUE(ok.says("valid: input vertices identical; " + std::to_string(stats["boundary_triangles"].get<int>()) + " boundary triangles")) << ok.out;
+}
+
+// Paper §6: a grid box, every unit square split along (1, 1), has no CDT under the vertex-id
+// perturbation but has one under a later order (the lexicographic one, order 2). `--steiner none`
+// meshes it exactly; the summary and --stats say which order; check finds the same order and
+// validates under it. The cube of cube_att.drc (Draco sample) likewise, under order 1.
+TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
+  TempDir dir;
+  const auto grid = dir.path() / "grid.off";
+  io::write_surface(grid, fixtures::grid_box_surface(2), io::Format::Off);
+  std::vector<std::tuple<fs::path, int, std::string>> cases{{grid, 2, "coordinates, lexicographically"}};
+  if (fs::exists(shared_data() / "drc/cube_att.drc")) cases.emplace_back(shared_data() / "drc/cube_att.drc", 1, "most constrained vertices first");
+  for (const auto& [input, order, name] : cases) {
+    const auto output = dir.path() / (input.stem().string() + ".mesh");
+    const auto stats_file = dir.path() / "s.json";
+    const CliRun r = run(quoted(input) + " --steiner none -o " + quoted(output) + " --stats " + quoted(stats_file), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_TRUE(r.says("0 Steiner points, perturbation order " + std::to_string(order) + " (" + name + ")")) << r.out;
+    const auto stats = nlohmann::json::parse(bytes_of(stats_file))["files"][0];
+    EXPECT_EQ(stats["perturbation_order"], order) << input;
+    EXPECT_GT(stats["perturbation_orders"].get<int>(), 1) << input;
+    EXPECT_EQ(stats["steiner_points"], 0) << input;
+    const CliRun ok = check(input, output, dir);
+    EXPECT_EQ(ok.exit_code, 0) << ok.out;
+    EXPECT_TRUE(ok.says("every interior facet locally Delaunay\n       under perturbation order " + std::to_string(order) + " (" + name)) << ok.out;
+  }
+}
+
+// A run that finds no CDT says how many orders it tried, in --stats too; Schönhardt's prism has no
+// exact tie, so one.
+TEST(CliCheck, NoCdtReportsThePerturbationOrdersTried) {
+  TempDir dir;
+  const auto prism = write_schonhardt(dir);
+  const auto stats_file = dir.path() / "s.json";
+  const CliRun r = run(quoted(prism) + " --steiner none -o " + quoted(dir.path() / "p.mesh") + " --stats " + quoted(stats_file), dir);
+  EXPECT_EQ(r.exit_code, 4) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(bytes_of(stats_file))["files"][0]["perturbation_orders"], 1);
 }
 
 }  // namespace

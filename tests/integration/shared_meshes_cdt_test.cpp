@@ -1,12 +1,15 @@
 // Every valid closed mesh of ../shared/data through the importer and all three CDT algorithms: they
-// must agree — identical, validate()-clean tetrahedralizations, or all NoCdtError (the PLC has no CDT
-// without Steiner points: issue 7). Gift-wrapping, O(n_v n_s), joins for the small meshes only.
+// must agree — identical, validate()-clean tetrahedralizations under the same perturbation order
+// (paper §6), or all NoCdtError (the PLC has no CDT without Steiner points: issue 7). Gift-wrapping,
+// O(n_v n_s), joins for the small meshes only.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
+#include <string>
 
 #include "sweepcdt/cdt.h"
 #include "triangulation_util.h"
@@ -23,15 +26,30 @@ const char* kValidMeshes[] = {
     "gltf/two_objects_inverse_materials.gltf",        "glb/moon.glb",                  "glb/cubevc.glb",
     "drc/cube_att.drc",    "drc/knot1.drc"};
 
+// The meshes that have a CDT exactly as given (no Steiner points); cube_att.drc only under a later
+// perturbation order (paper §6). Box.gltf and cubevc.glb are cubes too, but Box.gltf's face
+// diagonals are those of none of the 74 triangulations of the cube (no order can help), and
+// cubevc.glb (2 x 2 squares per face, float32 coordinates such as 1.0000001192092896) finds none
+// under the orders tried; whether it has a CDT at all is not known.
+const char* kMeshesWithCdtAsGiven[] = {"off/icosahedron.off", "glb/moon.glb", "drc/cube_att.drc", "drc/knot1.drc"};
+
+struct Outcome {
+  std::set<std::vector<uint32_t>> simplices;
+  uint32_t perturbation_order = 0;  // the order the CDT was found under (paper §6)
+  bool operator==(const Outcome&) const = default;
+};
+
 // The simplices, or nothing when the algorithm proves there is no CDT.
-std::optional<std::set<std::vector<uint32_t>>> run(const Plc<3>& plc, Algorithm algorithm, std::string& why) {
+std::optional<Outcome> run(const Plc<3>& plc, Algorithm algorithm, std::string& why) {
   Options options;
   options.algorithm = algorithm;
+  CdtStatistics stats;
+  options.statistics = &stats;
   try {
     const auto tri = cdt(plc, options);
     const auto report = validate(tri, plc);
     EXPECT_TRUE(report.ok()) << to_string(algorithm) << "\n" << report.summary();
-    return fixtures::simplex_set(tri);
+    return Outcome{fixtures::simplex_set(tri), stats.perturbation_order};
   } catch (const NoCdtError& e) {
     why = e.what();
     return std::nullopt;
@@ -61,11 +79,15 @@ TEST(SharedMeshes, AllAlgorithmsAgree) {
     }
     ++tested;
     with_cdt += plane.has_value();
+    const bool expected = std::find_if(std::begin(kMeshesWithCdtAsGiven), std::end(kMeshesWithCdtAsGiven),
+                                       [&](const char* k) { return std::string(k) == name; }) != std::end(kMeshesWithCdtAsGiven);
+    EXPECT_EQ(plane.has_value(), expected) << name << ": " << why_plane;
+    const std::string order = plane && plane->perturbation_order ? ", perturbation order " + std::to_string(plane->perturbation_order) : "";
     std::printf("  %-42s %6zu triangles: %s\n", name, plc.num_simplices(),
-                plane ? ("CDT, " + std::to_string(plane->size()) + " tetrahedra").c_str() : ("no CDT without Steiner points: " + why_plane.substr(0, 70)).c_str());
+                plane ? ("CDT, " + std::to_string(plane->simplices.size()) + " tetrahedra" + order).c_str()
+                      : ("no CDT without Steiner points: " + why_plane.substr(0, 70)).c_str());
   }
   EXPECT_EQ(tested, static_cast<int>(std::size(kValidMeshes)));
-  EXPECT_GE(with_cdt, 3) << "too few shared meshes have a CDT for this test to mean much";
 }
 
 // SteinerMode::Auto must give every valid shared mesh a CDT (of the refined PLC, exactly validated),

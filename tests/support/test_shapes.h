@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "sweepcdt/plc.h"
@@ -98,6 +99,61 @@ inline Plc<3> twisted_prism(double twist) {
     plc.simplices.insert(plc.simplices.end(), {i, j, 3 + j, i, 3 + j, 3 + i});
   }
   plc.exterior.assign(8, ExteriorSide::Negative);
+  return plc;
+}
+
+// The right prism of twisted_prism(0) (six exactly cospherical points: both triangles have one
+// circumcircle, mirrored at z = 1/2) with its side quads split as a staircase: the last quad by the
+// diagonal from bottom 0 to top 5 instead of 2 to 3, so bottom 0 meets two diagonals and no cycle
+// is left — three tetrahedra fill it. Outward, exterior Negative.
+inline Plc<3> staircase_prism() {
+  Plc<3> plc = twisted_prism(0.0);
+  // The last quad (2, 0, 3, 5): triangles (2, 0, 3) and (2, 3, 5) become (2, 0, 5) and (0, 3, 5).
+  std::copy_n(std::array<uint32_t, 6>{2, 0, 5, 0, 3, 5}.begin(), 6, plc.simplices.end() - 6);
+  return plc;
+}
+
+// The boundary of the Kuhn triangulation of the unit D-cube (the D! simplices along the diagonal
+// from the origin to (1, ..., 1)), with point ids scrambled: the point with coordinate bits b
+// (bit k = coordinate k) gets id b ^ scramble. All 2^D points are cospherical, so every simplex of
+// a triangulation is constrained Delaunay before the perturbation (paper §6) decides; every Kuhn
+// simplex holds both ends of the diagonal, so an order that pulls any other vertex first cannot
+// give it — the vertex-id order when scramble is not 0 or 2^D - 1. Exterior notations put the
+// cube's inside in the domain.
+template <int D>
+Plc<D> kuhn_cube_surface(uint32_t scramble) {
+  Plc<D> plc;
+  const uint32_t n = 1u << D;
+  plc.points.resize(std::size_t{n} * D);
+  for (uint32_t b = 0; b < n; ++b)
+    for (int k = 0; k < D; ++k) plc.points[std::size_t{b ^ scramble} * D + k] = (b >> k) & 1;
+  // Each facet (sorted ids) of the Kuhn simplices, how many simplices hold it, and an apex.
+  std::map<std::array<uint32_t, D>, std::pair<int, uint32_t>> facets;
+  std::array<int, D> axes;
+  for (int k = 0; k < D; ++k) axes[k] = k;
+  do {
+    std::array<uint32_t, D + 1> s;
+    uint32_t b = 0;
+    s[0] = scramble;
+    for (int k = 0; k < D; ++k) s[k + 1] = (b |= 1u << axes[k]) ^ scramble;
+    for (int i = 0; i <= D; ++i) {
+      std::array<uint32_t, D> f;
+      for (int k = 0, j = 0; k <= D; ++k)
+        if (k != i) f[j++] = s[k];
+      std::sort(f.begin(), f.end());
+      auto& [count, apex] = facets[f];
+      ++count;
+      apex = s[i];
+    }
+  } while (std::next_permutation(axes.begin(), axes.end()));
+  for (const auto& [f, entry] : facets) {
+    if (entry.first != 1) continue;  // interior facet
+    predicates::Coords<D + 1> c;
+    for (int k = 0; k < D; ++k) c[k] = plc.point(f[k]);
+    c[D] = plc.point(entry.second);
+    plc.simplices.insert(plc.simplices.end(), f.begin(), f.end());
+    plc.exterior.push_back(predicates::orient<D>(c) == predicates::Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
+  }
   return plc;
 }
 

@@ -7,6 +7,12 @@
 // perturbation of paper §6 (so degenerate, cospherical inputs get a well-defined answer), every
 // constraining simplex is a facet, and the simplices cover exactly the triangulation domain: the
 // convex hull without exterior notations, the facet-bounded domain with them.
+//
+// The perturbation is ordered by vertex id — unless that order leaves the perturbed PLC without a
+// CDT while a later order of sweepcdt/perturbation_order.h gives one: paper §6 warns that "the order
+// in which the vertices are perturbed can determine whether or not a triangulation is discovered"
+// (an exactly cospherical cube whose face diagonals allow one tetrahedralization only). The result
+// then records its order in Triangulation::perturbation_rank, and validate() checks it under that.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -15,6 +21,7 @@
 #include <vector>
 
 #include "sweepcdt/error.h"
+#include "sweepcdt/perturbation_order.h"
 #include "sweepcdt/plc.h"
 #include "sweepcdt/triangulation.h"
 #include "sweepcdt/validate.h"
@@ -39,6 +46,10 @@ struct CdtStatistics {
   uint64_t steiner_points = 0, steiner_rounds = 0;
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
                                          // edge flips that gave each its 2D CDT
+  // Paper §6: runs made, one per perturbation order tried (1 unless the vertex-id order found no CDT
+  // after exact ties), and the order of the result (0 = vertex ids; sweepcdt/perturbation_order.h).
+  // The counts and times above add up all runs.
+  uint32_t perturbation_orders = 0, perturbation_order = 0;
   double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
 };
 
@@ -60,9 +71,23 @@ struct Progress {
 //          as computed. Limits (points, rounds) make a hopeless input fail with NoCdtError instead of
 //          running away. core/src/steiner/refine.h has the details.
 //   D >= 4: not implemented; Auto behaves as None (NoCdtError when no CDT exists).
+//
+// With the PLC as given (None, and Auto for D >= 4) a run that finds no CDT is retried under the
+// next perturbation orders of sweepcdt/perturbation_order.h (up to kPerturbationOrders runs), but
+// only while the failed runs met an exact tie of D+2 cospherical points — in an insphere test, or in
+// the sweep keys of two simplices on one sphere (the sweep plane can find "no CDT" from those
+// alone). A run that decided every such test without the perturbation is taken to end the same
+// under any order: NoCdtError after one run (Schönhardt's twisted prism). A PLC with ties but no
+// CDT costs up to kPerturbationOrders runs.
+// What this does not promise: that a PLC with a CDT gets one. Only triangulations that some order
+// produces can be found (for a cospherical group, those that pull its first vertex: join it to all
+// it sees), only kPerturbationOrders fixed orders are tried — several groups that each need the
+// right vertex first are all served by one order only with luck — and paper §6 leaves open whether
+// some order always works. NoCdtError reports the vertex-id run's witness and says how many orders
+// were tried.
 enum class SteinerMode {
-  None,  // the PLC as given: NoCdtError when it has no CDT (paper §2)
-  Auto,  // split segments until a CDT exists (see above)
+  None,  // the PLC as given: NoCdtError when it has no CDT (paper §2) under any order tried (above)
+  Auto,  // split segments until a CDT exists (see above); perturbed by vertex id only
 };
 
 // What the constraining simplices of a D = 3 PLC stand for.

@@ -8,6 +8,12 @@
 //   neighbors:  s x (D+1): entry (D+1)*t + i is the facet opposite vertex i of simplex t, seen from the
 //               other side, encoded as (D+1)*u + j (simplex u, its facet opposite vertex j), or kNone.
 //   regions:    s region ids (empty when the caller asked for none).
+//   perturbation_rank: empty, or one entry per point: the order of the symbolic perturbation (paper §6)
+//               under which the simplices are constrained Delaunay — point v is perturbed as if its
+//               id were perturbation_rank[v] (lower = larger perturbation). Empty: by vertex id, the
+//               order cdt() always tries first; it sets this only when that order left the PLC
+//               without a CDT and a later one of sweepcdt/perturbation_order.h did not. validate()
+//               honours it.
 //
 // Local numbering: facet i of a simplex is the simplex without its vertex i.
 #pragma once
@@ -30,6 +36,7 @@ struct Triangulation {
   std::vector<uint32_t> simplices;
   std::vector<uint32_t> neighbors;
   std::vector<int32_t> regions;
+  std::vector<uint32_t> perturbation_rank;
 
   std::size_t num_points() const { return points.size() / D; }
   std::size_t num_simplices() const { return simplices.size() / (D + 1); }

@@ -2,7 +2,7 @@
 //
 // It decides exactly (through sweepcdt::predicates) whether `tri` is a constrained Delaunay
 // triangulation of `plc` (of its perturbed points, paper §6):
-//   topology     ids in range, no repeated ids, every facet in at most two simplices, neighbours
+//   topology     ids in range, perturbation_rank empty or a permutation of the points, no repeated ids, every facet in at most two simplices, neighbours
 //                symmetric and equal to the facet adjacency;
 //   orientation  every simplex strictly positively oriented; at every interior facet the two
 //                simplices lie on opposite sides;
@@ -14,7 +14,8 @@
 //                volume computed from its boundary (exact sums); no unused input point lies inside;
 //   delaunay     (Full) every interior facet that is not in a constraint is locally Delaunay under the
 //                perturbed insphere test — which, with the above, makes every simplex constrained
-//                Delaunay;
+//                Delaunay; the perturbation is ordered by tri.perturbation_rank when it is set (cdt()
+//                tried another order, paper §6), else by vertex id;
 //   regions      region ids (if present) agree across facets that are not constraints.
 #pragma once
 #include <cstddef>

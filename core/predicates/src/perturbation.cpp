@@ -16,6 +16,7 @@ Sign insphere_perturbed(const Vertices<D + 2>& p) {
   const Sign unperturbed = insphere<D>(coords_of(p));
   if (unperturbed != Sign::Zero) return unperturbed;
   detail::count_perturbed();
+  detail::count_tie();
 
   std::array<int, D + 2> by_id;
   std::iota(by_id.begin(), by_id.end(), 0);

@@ -6,6 +6,14 @@
 
 namespace sweepcdt::predicates {
 
+namespace {
+// A count private to each thread, read by cdt() as a difference: no state any result depends on.
+thread_local uint64_t t_ties = 0;
+}  // namespace
+
+void detail::count_tie() { ++t_ties; }
+uint64_t perturbation_ties_on_this_thread() { return t_ties; }
+
 #ifdef SWEEPCDT_PREDICATE_STATS
 namespace {
 std::atomic<uint64_t> g_filtered{0}, g_exact{0}, g_perturbed{0};

@@ -1,7 +1,11 @@
-// Internal: bump the predicate counters (no-ops unless built with SWEEPCDT_PREDICATE_STATS).
+// Internal: bump the predicate counters (no-ops unless built with SWEEPCDT_PREDICATE_STATS, except
+// count_tie()).
 #pragma once
 
 namespace sweepcdt::predicates::detail {
+
+// A tie decided by the perturbation, counted per thread whatever the build (stats.h).
+void count_tie();
 
 #ifdef SWEEPCDT_PREDICATE_STATS
 void count_filtered();

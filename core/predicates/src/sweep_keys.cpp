@@ -178,14 +178,35 @@ KeyInterval circumcenter_interval(const Vertices<D + 1>& s, int k) {
   return ratio_interval(nk, l.det + l.det, s[D].x[k]);
 }
 
+// Is a vertex of t (the first one not in s) on the circumsphere of s? Then the keys of s and t tie
+// because D+2 points are cospherical, a tie another perturbation order could decide otherwise
+// (count_tie, stats.h). Keys also tie without it — centres on a common axis-parallel line, a delta
+// vertex on the radical plane of two spheres, both common in CAD meshes —, and the perturbation
+// orders those too, but no order changes which simplices are constrained Delaunay there. One exact
+// insphere, on ties only.
+template <int D>
+bool cospherical_tie(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
+  for (const Vertex& v : t) {
+    if (std::any_of(s.begin(), s.end(), [&](const Vertex& w) { return w.x == v.x; })) continue;
+    Coords<D + 2> p;
+    for (int i = 0; i <= D; ++i) p[i] = s[i].x;
+    p[D + 1] = v.x;
+    return insphere<D>(p) == Sign::Zero;
+  }
+  return false;
+}
+
 template <int D>
 Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
   const Sign sigma = orientation_product<D>(s, t, "compare_circumcenters");
+  bool tie_checked = false;  // one cospherical tie per comparison
   for (int k = 0; k < D; ++k) {
     const Sign r = detail::filtered_sign(CircumcenterDifference<D>{s, t, k});
     if (r != Sign::Zero) return r * sigma;
     // Equal unperturbed coordinate: the eps terms decide, least vertex id first.
     detail::count_perturbed();
+    if (!tie_checked && cospherical_tie<D>(s, t)) detail::count_tie();
+    tie_checked = true;
     ExactArith exact;
     const Lifted<D, ExactArith> ls(exact, s), lt(exact, t);
     for (const uint32_t v : ids_ascending<D>(s, t)) {
@@ -196,11 +217,15 @@ Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
   return Sign::Zero;
 }
 
+// sign(Psi_q(s) - Psi_q(t)) * sign(Ds Dt) before the perturbation.
 template <int D>
-Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
-  const Sign sigma = orientation_product<D>(s, t, "compare_power");
-  const Sign r = detail::filtered_sign(PowerDifference<D>{s, t, q});
-  if (r != Sign::Zero) return r * sigma;
+Sign power_difference(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
+  return detail::filtered_sign(PowerDifference<D>{s, t, q});
+}
+
+// The same from the eps terms, least vertex id first: decides a tie of power_difference().
+template <int D>
+Sign power_difference_perturbed(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
   detail::count_perturbed();
   ExactArith exact;
   const Dyadic ds = detail::orient_det<D>(exact, coords_of(s));
@@ -208,16 +233,28 @@ Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Ver
   for (const uint32_t v : ids_ascending<D>(s, t)) {
     // coefficient of eps_v in L_t Ds - L_s Dt
     const Dyadic c = lift_cofactor<D>(s, q, v) * dt - lift_cofactor<D>(t, q, v) * ds;
-    if (c.sign() != 0) return detail::sign_of(c) * sigma;
+    if (c.sign() != 0) return detail::sign_of(c);
   }
   return Sign::Zero;
 }
 
 template <int D>
+Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
+  const Sign sigma = orientation_product<D>(s, t, "compare_power");
+  const Sign r = power_difference<D>(s, t, q);
+  return (r != Sign::Zero ? r : power_difference_perturbed<D>(s, t, q)) * sigma;
+}
+
+template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertices<D + 1>& delta) {
-  for (const Vertex& q : delta) {
-    const Sign r = compare_power<D>(s, t, q);
-    if (r != Sign::Zero) return r;
+  const Sign sigma = orientation_product<D>(s, t, "compare_power_tuples");
+  for (int i = 0; i <= D; ++i) {
+    Sign r = power_difference<D>(s, t, delta[i]);
+    if (r == Sign::Zero) {
+      if (i == 0 && cospherical_tie<D>(s, t)) detail::count_tie();
+      r = power_difference_perturbed<D>(s, t, delta[i]);
+    }
+    if (r != Sign::Zero) return r * sigma;
   }
   return Sign::Zero;
 }

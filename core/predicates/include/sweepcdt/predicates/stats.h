@@ -17,4 +17,13 @@ bool predicate_stats_enabled();
 PredicateStats predicate_stats();
 void reset_predicate_stats();
 
+// Ties of D+2 cospherical points decided by the symbolic perturbation on the calling thread so far:
+// in insphere_perturbed(), and in the sweep keys when the two simplices compared share a sphere (a
+// sweep plane can find "no CDT" from such keys alone; keys that tie for other reasons are not
+// counted, see sweep_keys.cpp). Counted always, unlike PredicateStats: cdt() reads it before and
+// after a run that found no CDT, because only a run that met such a tie can end differently under
+// another perturbation order (paper §6). Per thread, so that files meshed concurrently do not see
+// each other's ties; cdt() runs on its caller's thread.
+uint64_t perturbation_ties_on_this_thread();
+
 }  // namespace sweepcdt::predicates
