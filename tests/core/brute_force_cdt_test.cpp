@@ -10,12 +10,14 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <map>
 #include <sstream>
 
 #include "brute_force_cdt.h"
 #include "brute_force_delaunay.h"
 #include "simplex_tiling.h"
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/perturbation_order.h"
 #include "sweepcdt/predicates/occlusion.h"
 #include "triangulation_util.h"
 
@@ -49,7 +51,8 @@ Set delaunay_set(const Plc<D>& plc) {
 
 // What comparing PLCs with every algorithm found.
 struct Tally {
-  int with_cdt = 0, without_cdt = 0;  // PLCs, by the oracle's verdict
+  int with_cdt = 0, without_cdt = 0;  // PLCs, by the oracle's verdict under the vertex-id order
+  int with_cdt_in_another_order = 0;  // no CDT by vertex id, one under a later order cdt() found
   fixtures::BruteForceCdtCounts oracle;
   void add(const fixtures::BruteForceCdtCounts& c) {
     oracle.candidates += c.candidates;
@@ -62,33 +65,85 @@ struct Tally {
   }
 };
 
-// Every algorithm against the oracle. The constrained Delaunay simplices must have disjoint
-// interiors (paper §6: overlaps come from cospherical vertices, which the perturbation removes); then
-// the PLC has a CDT iff they triangulate it (simplex_tiling.h), and that CDT is unique. So cdt() must
-// return exactly them when they do, and throw NoCdtError when they do not.
+// The oracle's verdict under one perturbation order: the constrained Delaunay simplices in the PLC's
+// ids, and whether they triangulate it.
+struct Verdict {
+  Set simplices;
+  bool triangulation = false;
+};
+
+// The oracle under perturbation order `rank` (paper §6; sweepcdt/perturbation_order.h): vertex v is
+// perturbed as if its id were rank[v]. Written here from scratch, not with cdt()'s own renaming: the
+// PLC with point v moved to index rank[v], its answer renamed back.
 template <int D>
-void compare_with_algorithms(const Plc<D>& plc, const std::string& label, Tally& tally) {
-  const auto reference = fixtures::brute_force_cdt<D>(plc);
+Verdict oracle_in_order(const Plc<D>& plc, const std::vector<uint32_t>& rank, const std::string& label, Tally& tally) {
+  Plc<D> renamed = plc;
+  std::vector<uint32_t> back(rank.size());
+  for (uint32_t v = 0; v < rank.size(); ++v) {
+    back[rank[v]] = v;
+    std::copy_n(plc.points.begin() + std::size_t{v} * D, D, renamed.points.begin() + std::size_t{rank[v]} * D);
+  }
+  for (uint32_t& id : renamed.simplices) id = rank[id];
+  const auto reference = fixtures::brute_force_cdt<D>(renamed);
   tally.add(reference.counts);
-  const auto tiling = fixtures::tiling_report<D>(plc, reference.simplices);
+  const auto tiling = fixtures::tiling_report<D>(renamed, reference.simplices);
   EXPECT_TRUE(tiling.interiors_disjoint)
       << tiling.overlapping_pairs << " overlapping pairs: " << label << "\n" << describe(plc);
-  const bool has_cdt = tiling.triangulation();
-  ++(has_cdt ? tally.with_cdt : tally.without_cdt);
+  Verdict verdict;
+  verdict.triangulation = tiling.triangulation();
+  for (const auto& simplex : reference.simplices) {
+    std::vector<uint32_t> s;
+    for (uint32_t id : simplex) s.push_back(back[id]);
+    std::sort(s.begin(), s.end());
+    verdict.simplices.insert(s);
+  }
+  return verdict;
+}
+
+// Every algorithm against the oracle. The constrained Delaunay simplices must have disjoint
+// interiors (paper §6: overlaps come from cospherical vertices, which the perturbation removes); then
+// the perturbed PLC has a CDT iff they triangulate it (simplex_tiling.h), and that CDT is unique.
+// cdt() perturbs by vertex id first and, when that finds no CDT after exact ties, tries the later
+// orders of perturbation_order.h. So a returned CDT must be exactly the oracle's simplices under the
+// order it reports, and the id order must have none when it reports another; NoCdtError must come
+// with no CDT under any order cdt() may try — which also tests its rule of not retrying after a run
+// that met no tie.
+template <int D>
+void compare_with_algorithms(const Plc<D>& plc, const std::string& label, Tally& tally) {
+  std::map<int, Verdict> verdicts;  // by order, computed once for all algorithms
+  const auto verdict = [&](int order) -> const Verdict& {
+    auto it = verdicts.find(order);
+    if (it == verdicts.end())
+      it = verdicts.emplace(order, oracle_in_order(plc, perturbation_rank(plc, order), label, tally)).first;
+    return it->second;
+  };
+  const bool has_cdt = verdict(0).triangulation;
+  bool found_in_other_order = false;
   for (Algorithm algorithm : kAlgorithms) {
     Options options;
     options.algorithm = algorithm;
+    CdtStatistics stats;
+    options.statistics = &stats;
     const std::string where = label + " " + to_string(algorithm) + "\n" + describe(plc);
     try {
       const auto tri = cdt(plc, options);
-      EXPECT_TRUE(has_cdt) << "a CDT was returned, but the constrained Delaunay simplices do not "
-                              "triangulate the PLC: " << where;
-      EXPECT_EQ(fixtures::simplex_set(tri), reference.simplices) << where;
+      const int order = static_cast<int>(stats.perturbation_order);
+      EXPECT_EQ(tri.perturbation_rank.empty(), order == 0) << where;
+      if (order != 0) {
+        EXPECT_EQ(tri.perturbation_rank, perturbation_rank(plc, order)) << where;
+        EXPECT_FALSE(has_cdt) << "order " << order << " used, but the vertex-id order has a CDT: " << where;
+        found_in_other_order = true;
+      }
+      EXPECT_TRUE(verdict(order).triangulation) << "a CDT was returned, but the constrained Delaunay simplices "
+                                                   "of perturbation order " << order << " do not triangulate the PLC: " << where;
+      EXPECT_EQ(fixtures::simplex_set(tri), verdict(order).simplices) << "order " << order << ": " << where;
     } catch (const NoCdtError& e) {
-      EXPECT_FALSE(has_cdt) << "NoCdtError (" << e.what() << "), but the constrained Delaunay simplices "
-                               "are a CDT: " << where;
+      for (int order = 0; order < kPerturbationOrders; ++order)
+        EXPECT_FALSE(verdict(order).triangulation) << "NoCdtError (" << e.what() << "), but the constrained Delaunay "
+                                                      "simplices of perturbation order " << order << " are a CDT: " << where;
     }
   }
+  ++(has_cdt ? tally.with_cdt : found_in_other_order ? tally.with_cdt_in_another_order : tally.without_cdt);
 }
 
 // ---- the exact linear program -------------------------------------------------------------------
@@ -354,9 +409,9 @@ void random_against_oracle(int seeds, int inner, int outer, int constraints) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto& c = tally.oracle;
-  std::printf("[ oracle ] D=%d: %d PLCs with a CDT, %d without; %llu candidate simplices: %llu crossed, %llu see a "
+  std::printf("[ oracle ] D=%d: %d PLCs with a CDT, %d with one under another perturbation order only, %d without; %llu candidate simplices: %llu crossed, %llu see a "
               "vertex, %llu accepted by occlusion (%llu hidden vertices, %llu by unions only); %llu LPs; %.2f s\n",
-              D, tally.with_cdt, tally.without_cdt, (unsigned long long)c.candidates, (unsigned long long)c.crossed,
+              D, tally.with_cdt, tally.with_cdt_in_another_order, tally.without_cdt, (unsigned long long)c.candidates, (unsigned long long)c.crossed,
               (unsigned long long)c.visible, (unsigned long long)c.accepted_by_occlusion, (unsigned long long)c.hidden,
               (unsigned long long)c.hidden_by_union, (unsigned long long)c.linear_programs, seconds);
   EXPECT_GE(tally.with_cdt, 10) << "too few CDTs compared";
