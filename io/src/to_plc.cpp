@@ -20,8 +20,13 @@ Plc<3> to_plc(const Surface& surface, const SurfaceReport& report) {
   return plc;
 }
 
-Plc<3> import_plc(const std::filesystem::path& file) {
-  const Surface surface = weld(read_soup(file));
+Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance, SnapReport* snapped) {
+  Surface surface = weld(read_soup(file));
+  if (snap_tolerance > 0) {
+    SnapReport report;
+    surface = snap_coordinates(surface, snap_tolerance, report);
+    if (snapped) *snapped = report;
+  }
   return to_plc(surface, inspect(surface));
 }
 

@@ -9,6 +9,7 @@
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "sweepcdt/perturbation_order.h"
+#include "run_options.h"
 #include "usage.h"
 #include "verify_mesh.h"
 
@@ -19,6 +20,7 @@ namespace fs = std::filesystem;
 int run_check(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
   std::vector<std::string> files;
   bool quiet = false;
+  double snap = 0;  // --snap TOL: the input as `mesh --snap TOL` read it
   try {
     ArgReader args(words);
     while (!args.done()) {
@@ -26,7 +28,9 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
         out << check_help();
         return kOk;
       }
+      std::string value;
       if (args.flag("--quiet") || args.flag("-q")) quiet = true;
+      else if (args.value("--snap", value)) snap = parse_snap(value);
       else if (args.at_option()) throw UsageError("unknown option '" + args.peek() + "'");
       else files.push_back(args.take());
     }
@@ -41,7 +45,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
   io::VolumeMesh mesh;
   for (const std::string* file : {&input, &output}) {
     try {
-      if (file == &input) plc = io::import_plc(input);
+      if (file == &input) plc = io::import_plc(input, snap);
       else mesh = io::read_volume_mesh(output);
     } catch (...) {
       const Failure f = describe_current_exception(*file);

@@ -10,6 +10,7 @@
 
 #include "check_before_writing.h"
 #include "errors.h"
+#include "sweepcdt/io/read.h"
 #include "sweepcdt/io/to_plc.h"
 
 namespace sweepcdt::cli {
@@ -35,6 +36,27 @@ void remove_mesh_files(const MeshTarget& target) {
   for (const char* part : {".node", ".ele", ".face"}) std::filesystem::remove(base.string() + part, ec);
 }
 
+// The tolerance the hint below suggests: far above rounding noise, far below modelling detail.
+constexpr double kSuggestedSnap = 1e-12;
+
+// Why an input without a CDT may only look that way: faces flat by design but stored with rounding
+// noise (sweepcdt/io/snap.h). Empty unless --snap would make some faces exactly flat (or when the
+// input cannot be re-read).
+std::string snap_hint(const std::string& input) {
+  try {
+    io::SnapReport report;
+    io::snap_coordinates(io::weld(io::read_soup(input)), kSuggestedSnap, report);
+    if (report.edges_flattened == 0) return {};
+    char moved[32];
+    std::snprintf(moved, sizeof moved, "%.2g", report.largest_move);
+    return "hint: moving " + std::to_string(report.points_moved) + " vertices by up to " + moved +
+           " (CAD rounding noise?) would make the triangles at " + std::to_string(report.edges_flattened) +
+           " edges exactly coplanar: `--snap 1e-12 --facets coplanar` makes faces that are flat by design exactly flat";
+  } catch (...) {
+    return {};
+  }
+}
+
 }  // namespace
 
 FileResult convert_surface(const std::string& input, const std::vector<MeshTarget>& targets, const RunOptions& options,
@@ -48,7 +70,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
   try {
     throw_if_interrupted();
     progress.phase("reading");
-    const Plc<3> plc = io::import_plc(input);
+    const Plc<3> plc = io::import_plc(input, options.snap, &r.snap);
     r.seconds_read = since(start);
     r.input_points = plc.num_points();
     r.input_simplices = plc.num_simplices();
@@ -79,6 +101,8 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
       if (target.format == io::MeshFormat::Abaqus) warn_if_rounded(target.file, mesh, r);
   } catch (...) {
     fail(r, describe_current_exception(input, writing));
+    if (r.code == kNoCdt && options.snap == 0)
+      if (std::string hint = snap_hint(input); !hint.empty()) r.details.push_back(std::move(hint));
     for (std::size_t k = 0; k < written; ++k) remove_mesh_files(targets[k]);
   }
   r.seconds_total = since(start);
@@ -110,6 +134,11 @@ std::string summary_of(const FileResult& r) {
   std::string s = std::to_string(r.simplices) + what;
   if (r.dimension == 3) s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
   // Paper §6: the vertex-id perturbation left the PLC without a CDT; say which order gave one.
+  if (r.snap.points_moved > 0) {
+    char moved[64];
+    std::snprintf(moved, sizeof moved, "%.3g", r.snap.largest_move);
+    s += ", " + std::to_string(r.snap.points_moved) + " points snapped (by up to " + moved + ")";
+  }
   if (r.cdt.perturbation_order > 0)
     s += ", perturbation order " + std::to_string(r.cdt.perturbation_order) + " (" + perturbation_order_name(static_cast<int>(r.cdt.perturbation_order)) + ")";
   if (r.validated) s += ", checked";

@@ -7,6 +7,7 @@
 
 #include "exit_codes.h"
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/io/snap.h"
 
 namespace sweepcdt::cli {
 
@@ -24,7 +25,8 @@ struct FileResult {
   std::vector<std::string> warnings;  // the file converted, but the user should know (one line each)
 
   int dimension = 3;
-  uint64_t input_points = 0, input_simplices = 0;  // after welding; triangles for surfaces
+  uint64_t input_points = 0, input_simplices = 0;  // after welding (and --snap); triangles for surfaces
+  io::SnapReport snap;                             // --snap: what moved
   uint64_t simplices = 0;                          // tetrahedra in 3D
   uint64_t boundary_triangles = 0, regions = 0;    // volume meshes only
   bool computed = false;                           // cdt() returned (statistics are meaningful)

@@ -1,5 +1,7 @@
 #include "run_options.h"
 
+#include <stdexcept>
+
 namespace sweepcdt::cli {
 
 const char* to_string(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
@@ -13,6 +15,20 @@ Options core_options(const RunOptions& options, CdtStatistics* statistics, std::
   o.statistics = statistics;
   o.progress = std::move(progress);
   return o;
+}
+
+double parse_snap(const std::string& text) {
+  std::size_t used = 0;
+  double tolerance = 0;
+  try {
+    tolerance = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(tolerance > 0 && tolerance <= kLargestSnap))
+    throw UsageError("--snap needs a tolerance relative to the bounding-box diagonal, above 0 and at most 1e-3 (e.g. "
+                     "--snap 1e-12), not '" + text + "'");
+  return tolerance;
 }
 
 bool read_run_option(ArgReader& args, RunOptions& options) {
@@ -30,6 +46,8 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
     if (v == "triangles") options.facets = FacetMode::Triangles;
     else if (v == "coplanar") options.facets = FacetMode::Coplanar;
     else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
+  } else if (args.value("--snap", v)) {
+    options.snap = parse_snap(v);
   } else if (args.flag("--check")) {
     options.check = true;
   } else if (args.value("--stats", v)) {

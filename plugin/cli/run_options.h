@@ -13,6 +13,7 @@ struct RunOptions {
   Algorithm algorithm = Algorithm::SweepSphere;
   SteinerMode steiner = SteinerMode::Auto;
   FacetMode facets = FacetMode::Triangles;  // --facets triangles|coplanar (3D)
+  double snap = 0;  // --snap TOL: snap surface coordinates first (sweepcdt/io/snap.h); 0 = exact input
   bool check = false;      // --check: validate the result again before writing it
   std::string stats_file;  // --stats FILE.json
   bool quiet = false;      // --quiet: errors only
@@ -23,6 +24,10 @@ const char* to_string(FacetMode mode);    // "triangles", "coplanar"
 
 // The core options of a run: what the user chose, plus where statistics and progress go.
 Options core_options(const RunOptions& options, CdtStatistics* statistics, std::function<bool(const Progress&)> progress);
+
+// --snap's bounds: it repairs rounding noise, not modelling error.
+inline constexpr double kLargestSnap = 1e-3;
+double parse_snap(const std::string& text);
 
 // Consumes one of the shared options at the reader's position; false if it is none of them.
 bool read_run_option(ArgReader& args, RunOptions& options);

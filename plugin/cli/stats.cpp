@@ -26,7 +26,7 @@ const char* status_word(int code) {
   return "internal-error";
 }
 
-nlohmann::ordered_json file_json(const FileResult& r) {
+nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
   nlohmann::ordered_json j;
   j["input"] = r.input;
   j["outputs"] = nlohmann::ordered_json::array();
@@ -38,6 +38,13 @@ nlohmann::ordered_json file_json(const FileResult& r) {
   j["dimension"] = r.dimension;
   j["input_vertices"] = r.input_points;
   j[r.dimension == 3 ? "input_triangles" : "input_simplices"] = r.input_simplices;
+  if (run_snap > 0)  // --snap: the surface was moved before meshing (sweepcdt/io/snap.h)
+    j["snap"] = {{"tolerance", r.snap.tolerance},
+                 {"coordinates_moved", r.snap.coordinates_moved},
+                 {"points_moved", r.snap.points_moved},
+                 {"points_merged", r.snap.points_merged},
+                 {"edges_flattened", r.snap.edges_flattened},
+                 {"largest_move", r.snap.largest_move}};
   if (r.computed) {
     j["algorithm"] = to_string(r.cdt.algorithm);  // the one that ran (sweep-plane falls back to the sphere on hulls)
     j["steiner_points"] = r.cdt.steiner_points;
@@ -88,13 +95,14 @@ void write_stats(const std::string& file, const RunSummary& run, const std::vect
   j["algorithm"] = to_string(run.options.algorithm);  // requested; per file: the one that ran
   j["steiner"] = to_string(run.options.steiner);
   j["facets"] = to_string(run.options.facets);
+  j["snap"] = run.options.snap;  // relative tolerance; 0: the input as given
   j["check"] = run.options.check;
   j["threads"] = run.threads;
   j["exit_code"] = run.exit_code;
   j["seconds"] = run.seconds;
   j["peak_memory_bytes"] = peak_memory_bytes();  // the whole process: with threads, of all files at once
   j["files"] = nlohmann::ordered_json::array();
-  for (const FileResult& r : results) j["files"].push_back(file_json(r));
+  for (const FileResult& r : results) j["files"].push_back(file_json(r, run.options.snap));
 
   const std::filesystem::path path(file);
   const std::filesystem::path tmp = path.string() + ".tmp" + std::to_string(::getpid());

@@ -45,6 +45,12 @@ std::string mesh_help() {
          "                      coplanar: edge-adjacent, exactly coplanar triangles form one polygonal\n"
          "                      facet, re-triangulated by its 2D CDT (fewer Steiner points on CAD meshes;\n"
          "                      face ids then name each facet's first input triangle)\n"
+         "  --snap TOL          repair CAD rounding noise first (off by default: the input is exact):\n"
+         "                      along each axis, coordinates within TOL x the bounding-box diagonal\n"
+         "                      of each other become one value (the most frequent), so faces flat by\n"
+         "                      design (z = 0 stored as z = 5e-17) are exactly flat; 0 < TOL <= 1e-3,\n"
+         "                      e.g. --snap 1e-12 --facets coplanar. Points that meet are merged; the\n"
+         "                      summary and --stats say how many moved. `check` needs the same --snap\n"
          "  --check             validate the result exactly once more before writing; refuse (exit 6) if not valid\n"
          "reporting:\n"
          "  --stats FILE.json   counts, Steiner points, per-phase times, peak memory (written atomically)\n"
@@ -58,7 +64,7 @@ std::string mesh_help() {
          exit_codes_text();
 }
 
-std::string check_usage() { return "usage: sweepcdt check INPUT OUTPUT [--quiet]\n"; }
+std::string check_usage() { return "usage: sweepcdt check INPUT OUTPUT [--snap TOL] [--quiet]\n"; }
 
 std::string check_help() {
   return check_usage() +
@@ -81,6 +87,7 @@ std::string check_help() {
          "  - validate(): tetrahedra positively oriented and properly connected, the domain covered\n"
          "    exactly (volumes), every constraint present, every interior facet locally Delaunay\n"
          "    (without Steiner points: under the first of the perturbation orders mesh tries).\n"
+         "  --snap TOL: the input as `mesh --snap TOL` snapped it (give the same TOL).\n"
          "Exit 0: valid; 6: not valid (the first problems are printed); 3: INPUT or OUTPUT unreadable.\n"
          "\n" +
          exit_codes_text();

@@ -12,6 +12,7 @@
 #pragma once
 #include <filesystem>
 
+#include "sweepcdt/io/snap.h"
 #include "sweepcdt/io/surface.h"
 #include "sweepcdt/plc.h"
 
@@ -21,6 +22,8 @@ namespace sweepcdt::io {
 Plc<3> to_plc(const Surface& surface, const SurfaceReport& report);
 
 // read_soup → weld → inspect → to_plc in one call, for callers that want the PLC or an error.
-Plc<3> import_plc(const std::filesystem::path& file);
+// With snap_tolerance > 0 the welded surface is snapped first (snap.h), and `snapped` (if given)
+// says what moved.
+Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance = 0, SnapReport* snapped = nullptr);
 
 }  // namespace sweepcdt::io

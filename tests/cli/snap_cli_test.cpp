@@ -1,0 +1,89 @@
+// `--snap TOL` (sweepcdt/io/snap.h), as a user meets it: the hint that suggests it when a CAD mesh
+// has no CDT, the mesh it then gives, what the summary and --stats say, `check --snap`, and the
+// tolerances it refuses.
+#include <nlohmann/json.hpp>
+
+#include "cli_run.h"
+#include "sweepcdt/io/surface.h"
+#include "sweepcdt/io/to_plc.h"
+#include "sweepcdt/io/volume_mesh.h"
+#include "test_shapes.h"
+
+namespace sweepcdt::cli::testing {
+namespace {
+
+const char kGearwheel[] = "stl_ascii/gearwheel_ascii.stl";
+
+// gearwheel's bottom face is z = 0 at most vertices and z = ±5e-17 at 242 others (CAD noise).
+TEST(CliSnap, GearwheelHasNoCdtAsGivenAndTheMessageSaysWhatToTry) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const CliRun r = run(quoted(shared_data() / kGearwheel) + " -o " + quoted(dir.path() / "g.mesh"), dir);
+  EXPECT_EQ(r.exit_code, 4) << r.out;
+  EXPECT_TRUE(r.says("hint: moving 242 vertices by up to 5.4e-17")) << r.out;
+  EXPECT_TRUE(r.says("--snap 1e-12 --facets coplanar")) << r.out;
+  // Schönhardt's prism has rounding noise too (6.7e-16 for 0), but snapping it flattens nothing: no hint.
+  const CliRun prism = run("--steiner none " + quoted(write_schonhardt(dir)) + " -o " + quoted(dir.path() / "p.mesh"), dir);
+  EXPECT_EQ(prism.exit_code, 4) << prism.out;
+  EXPECT_FALSE(prism.says("hint:")) << prism.out;
+}
+
+TEST(CliSnap, GearwheelSnappedWithCoplanarFacetsMeshesAndValidates) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
+  TempDir dir;
+  const auto out = dir.path() / "g.vtu";
+  const auto stats = dir.path() / "g.json";
+  const CliRun r = run(quoted(shared_data() / kGearwheel) + " -o " + quoted(out) + " --snap 1e-12 --facets coplanar --check --stats " +
+                           quoted(stats),
+                       dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(r.says("242 points snapped (by up to 5.41e-17)")) << r.out;
+  EXPECT_TRUE(r.says("checked")) << r.out;
+  const auto json = nlohmann::json::parse(bytes_of(stats));
+  EXPECT_EQ(json["snap"], 1e-12);
+  const auto& snap = json["files"][0]["snap"];
+  EXPECT_EQ(snap["points_moved"], 242);
+  EXPECT_EQ(snap["coordinates_moved"], 242);  // z only
+  EXPECT_EQ(snap["points_merged"], 0);
+  EXPECT_GT(snap["edges_flattened"].get<int>(), 100);
+  EXPECT_EQ(snap["largest_move"], 5.405771e-17);
+  // The mesh's points are the snapped input's: no z between -1e-16 and 1e-16 other than 0.
+  const io::VolumeMesh mesh = io::read_volume_mesh(out);
+  EXPECT_GT(mesh.num_tetrahedra(), 1000u);
+  for (std::size_t i = 2; i < mesh.points.size(); i += 3)
+    if (std::abs(mesh.points[i]) < 1e-16) EXPECT_EQ(mesh.points[i], 0.0) << i / 3;
+}
+
+// A cube whose bottom face has one noisy vertex, meshed with --snap: `check` must be told the same
+// tolerance, since the mesh's points are the snapped ones.
+TEST(CliSnap, CheckReadsTheInputSnappedLikeMesh) {
+  TempDir dir;
+  Plc<3> cube = fixtures::unit_cube_surface();
+  cube.points[3 * 3 + 2] = -4e-17;  // point 3 = (1, 1, 0)
+  const auto input = dir.path() / "noisy_cube.off";
+  io::write_surface(input, cube, io::Format::Off);
+  const auto out = dir.path() / "cube.mesh";
+  const CliRun meshed = run(quoted(input) + " -o " + quoted(out) + " --snap 1e-12", dir);
+  ASSERT_EQ(meshed.exit_code, 0) << meshed.out;
+  EXPECT_TRUE(meshed.says("1 points snapped (by up to 4e-17)")) << meshed.out;
+  const CliRun exact = run("check " + quoted(input) + " " + quoted(out), dir);
+  EXPECT_EQ(exact.exit_code, 6) << exact.out;
+  const CliRun snapped = run("check " + quoted(input) + " " + quoted(out) + " --snap 1e-12", dir);
+  EXPECT_EQ(snapped.exit_code, 0) << snapped.out;
+}
+
+TEST(CliSnap, ToleranceMustBeAboveZeroAndAtMostOneThousandth) {
+  TempDir dir;
+  const auto input = write_schonhardt(dir);
+  for (const char* bad : {"0", "-1e-12", "abc", "1e-2", "nan", "inf", "1e-12x", ""}) {
+    const CliRun r = run(quoted(input) + " -o " + quoted(dir.path() / "p.mesh") + " --snap '" + bad + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out;
+    EXPECT_TRUE(r.says("--snap needs a")) << bad << "\n" << r.out;  // "a value" when it looks like an option
+  }
+  const CliRun check = run("check " + quoted(input) + " " + quoted(input) + " --snap 1", dir);
+  EXPECT_EQ(check.exit_code, 2) << check.out;
+  EXPECT_TRUE(files_in(dir.path()) == std::set<std::string>{"schonhardt.off"});
+}
+
+}  // namespace
+}  // namespace sweepcdt::cli::testing
