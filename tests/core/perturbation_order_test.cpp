@@ -147,33 +147,27 @@ TEST(PerturbationOrder, KuhnCubesInThreeToFiveDimensions) {
   expect_agreement_in_a_later_order(fixtures::kuhn_cube_surface<5>(1), "5-cube", {Algorithm::SweepPlane});
 }
 
-// Without a scramble the vertex ids pull the origin first: one run, as before.
-TEST(PerturbationOrder, OneRunWhenTheIdsWork) {
+// Every algorithm finds the CDT of `plc` in one run, under the vertex-id order.
+template <int D>
+void expect_one_run(const Plc<D>& plc, const std::string& name) {
   for (const Algorithm algorithm : kAlgorithms) {
     Options options;
     options.algorithm = algorithm;
     CdtStatistics stats;
     options.statistics = &stats;
-    const Plc<4> cube = fixtures::kuhn_cube_surface<4>(0);
-    const Triangulation<4> tri = cdt(cube, options);
-    EXPECT_EQ(stats.perturbation_orders, 1u) << to_string(algorithm);
-    EXPECT_EQ(stats.perturbation_order, 0u) << to_string(algorithm);
-    EXPECT_TRUE(tri.perturbation_rank.empty()) << to_string(algorithm);
+    const Triangulation<D> tri = cdt(plc, options);
+    EXPECT_TRUE(validate(tri, plc).ok()) << name << " " << to_string(algorithm);
+    EXPECT_EQ(stats.perturbation_orders, 1u) << name << " " << to_string(algorithm);
+    EXPECT_EQ(stats.perturbation_order, 0u) << name << " " << to_string(algorithm);
+    EXPECT_TRUE(tri.perturbation_rank.empty()) << name << " " << to_string(algorithm);
   }
 }
 
+// Without a scramble the vertex ids pull the origin first: one run, as before.
+TEST(PerturbationOrder, OneRunWhenTheIdsWork) { expect_one_run(fixtures::kuhn_cube_surface<4>(0), "4-cube"); }
+
 // Dimension 2: the perturbed points always have a CDT, so no second order is ever tried.
-TEST(PerturbationOrder, TwoDimensionsNeedOneOrder) {
-  for (const Algorithm algorithm : kAlgorithms) {
-    Options options;
-    options.algorithm = algorithm;
-    CdtStatistics stats;
-    options.statistics = &stats;
-    const Plc<2> square = fixtures::kuhn_cube_surface<2>(1);
-    EXPECT_TRUE(validate(cdt(square, options), square).ok());
-    EXPECT_EQ(stats.perturbation_orders, 1u);
-  }
-}
+TEST(PerturbationOrder, TwoDimensionsNeedOneOrder) { expect_one_run(fixtures::kuhn_cube_surface<2>(1), "scrambled square"); }
 
 // Right prisms over a triangle (issue item): the staircase split has six cospherical points and a
 // tetrahedralization; twisted against Schönhardt's sense its diagonals are convex edges.
