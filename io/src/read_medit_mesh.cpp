@@ -32,7 +32,7 @@ VolumeMesh read_medit(std::string_view bytes, const std::string& file) {
       m.points.reserve(3 * n);
       for (uint64_t i = 0; i < n; ++i) {
         for (int k = 0; k < 3; ++k) m.points.push_back(in.to_double(in.next_token(), "a coordinate"));
-        in.to_integer(in.next_token(), "a vertex reference");
+        m.on_triangle.push_back(triangle_from_file(in.to_integer(in.next_token(), "a vertex reference")));
       }
       m.num_input_points = static_cast<uint32_t>(n);
     } else if (key == "Tetrahedra" || key == "Triangles") {

@@ -29,7 +29,8 @@ int64_t read_nodes(const std::string& bytes, const std::string& name, VolumeMesh
       in.fail(InputErrorKind::Syntax, "point ids must be consecutive: expected " + std::to_string(base + static_cast<int64_t>(i)) + ", found " + std::to_string(id));
     }
     for (int k = 0; k < 3; ++k) m.points.push_back(in.to_double(in.next_token(), "a coordinate"));
-    for (int64_t a = 0; a < attributes + markers; ++a) in.to_double(in.next_token(), "an attribute or marker");
+    for (int64_t a = 0; a < attributes; ++a) in.to_double(in.next_token(), "an attribute");
+    if (markers) m.on_triangle.push_back(triangle_from_file(in.to_integer(in.next_token(), "a boundary marker")));
   }
   m.num_input_points = static_cast<uint32_t>(n);
   return base;

@@ -1,6 +1,6 @@
 // VTK XML unstructured grid (.vtu) reader for ascii files like the ones write_volume_mesh() writes:
 // one Piece, Points, Cells (connectivity/offsets/types), optional CellData region / boundary_tag and
-// PointData steiner. Cell types 10 (tetrahedron) and 5 (triangle: boundary); binary or appended data,
+// PointData steiner and input_triangle. Cell types 10 (tetrahedron) and 5 (triangle: boundary); binary or appended data,
 // compression and other cell types are refused by name. Not a general XML parser: tags are found by
 // name, which is all a .vtu needs.
 #include <charconv>
@@ -148,6 +148,8 @@ VolumeMesh read_vtu(std::string_view bytes, const std::string& file) {
       while (first < n && steiner[first] == 0) ++first;
       m.num_input_points = static_cast<uint32_t>(first);
     }
+    if (const auto a = x.find_array(point_data, x.find("</PointData>", point_data), "input_triangle"); a.tag != std::string_view::npos)
+      for (const int64_t written : x.numbers<int64_t>(a, n, "input_triangle")) m.on_triangle.push_back(triangle_from_file(written));
   }
 
   int64_t previous = 0;

@@ -28,6 +28,9 @@ VolumeMesh volume_mesh_of(const Triangulation<3>& tri, const Plc<3>& triangulate
   mesh.tetrahedra = tri.simplices;
   const std::size_t t = tri.num_simplices();
   mesh.regions = tri.regions.size() == t ? tri.regions : std::vector<int32_t>(t, 0);
+  mesh.on_triangle.assign(tri.num_input_points, kNone);
+  mesh.on_triangle.insert(mesh.on_triangle.end(), tri.steiner_on.begin(), tri.steiner_on.end());
+  mesh.on_triangle.resize(tri.num_points(), kNone);  // a triangulation built by hand may not say
 
   // The domain boundary: facets with no tetrahedron on the other side. cdt() pairs neighbours; a
   // triangulation built by hand may come without them.

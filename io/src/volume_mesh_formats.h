@@ -75,6 +75,11 @@ namespace sweepcdt::io::detail {
 // A boundary tag as written (0 = none) and back.
 inline int64_t file_tag(uint32_t tag) { return tag == kNone ? 0 : int64_t{tag} + 1; }
 inline uint32_t tag_from_file(int64_t written) { return written == 0 ? kNone : static_cast<uint32_t>(written - 1); }
+// A point's reference or marker as VolumeMesh::on_triangle: sweepcdt writes 0 or triangle + 1; what
+// other tools write there (any integer) is no triangle.
+inline uint32_t triangle_from_file(int64_t written) { return written >= 1 && written <= INT64_C(0xFFFFFFFF) ? static_cast<uint32_t>(written - 1) : kNone; }
+// VolumeMesh::on_triangle[i], or kNone when the mesh does not say.
+inline uint32_t point_triangle(const VolumeMesh& m, std::size_t i) { return i < m.on_triangle.size() ? m.on_triangle[i] : kNone; }
 
 // The mesh's coordinates as "x y z" with the shortest exact text.
 inline void append_point(std::string& out, const VolumeMesh& m, std::size_t i, char separator = ' ') {

@@ -1,5 +1,6 @@
 // Medit .mesh (ascii, MeshVersionFormatted 2: double precision), as read by Medit, mmg, Gmsh, meshio.
-//   Vertices     x y z 0
+//   Vertices     x y z ref                 (ref: 0 for an input vertex; for a Steiner point the
+//                                            input triangle it lies on + 1)
 //   Tetrahedra   a b c d region+1        (1-based point ids, positive volume)
 //   Triangles    a b c tag+1             (boundary, counterclockwise seen from outside; 0 = no tag)
 #include "volume_mesh_formats.h"
@@ -12,7 +13,9 @@ std::string medit_text(const VolumeMesh& m) {
   out += '\n';
   for (std::size_t i = 0; i < m.num_points(); ++i) {
     append_point(out, m, i);
-    out += " 0\n";
+    out += ' ';
+    append_int(out, file_tag(point_triangle(m, i)));
+    out += '\n';
   }
   out += "\nTetrahedra\n";
   append_int(out, static_cast<int64_t>(m.num_tetrahedra()));

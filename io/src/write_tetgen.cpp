@@ -1,5 +1,7 @@
 // TetGen .node / .ele / .face (as `tetgen -r` reads them back, and TetView, meshio).
-//   .node  n 3 0 0            then: id x y z                  (ids 1-based)
+//   .node  n 3 0 1            then: id x y z marker           (ids 1-based; marker: 0 for an input
+//                                                              vertex, for a Steiner point the input
+//                                                              triangle it lies on + 1)
 //   .ele   t 4 1              then: id a b c d region+1       (positive volume; attribute = region)
 //   .face  b 1                then: id a b c tag+1            (boundary, counterclockwise seen from
 //                                                              outside; marker 0 = no tag)
@@ -11,11 +13,13 @@ namespace sweepcdt::io::detail {
 
 TetGenFiles tetgen_texts(const VolumeMesh& m) {
   TetGenFiles f;
-  f.node = std::to_string(m.num_points()) + " 3 0 0\n";
+  f.node = std::to_string(m.num_points()) + " 3 0 1\n";
   for (std::size_t i = 0; i < m.num_points(); ++i) {
     append_int(f.node, static_cast<int64_t>(i) + 1);
     f.node += ' ';
     append_point(f.node, m, i);
+    f.node += ' ';
+    append_int(f.node, file_tag(point_triangle(m, i)));
     f.node += '\n';
   }
   f.ele = std::to_string(m.num_tetrahedra()) + " 4 1\n";

@@ -6,6 +6,7 @@
 //   CellData  region        Int32  tetrahedron: region + 1; triangle: 0
 //             boundary_tag  Int64  triangle: tag + 1 (0 = none); tetrahedron: 0
 //   PointData steiner       UInt8  1 for a Steiner point (id >= num_input_points), else 0
+//             input_triangle Int64 a Steiner point: the input triangle it lies on + 1; else 0
 #include "volume_mesh_formats.h"
 
 namespace sweepcdt::io::detail {
@@ -32,6 +33,12 @@ std::string vtu_text(const VolumeMesh& m) {
   out += "<PointData>\n";
   open_array(out, "UInt8", "steiner");
   for (std::size_t i = 0; i < n; ++i) out += i < m.num_input_points ? "0\n" : "1\n";
+  out += "</DataArray>\n";
+  open_array(out, "Int64", "input_triangle");
+  for (std::size_t i = 0; i < n; ++i) {
+    append_int(out, file_tag(point_triangle(m, i)));
+    out += '\n';
+  }
   out += "</DataArray>\n</PointData>\n<Points>\n";
   open_array(out, "Float64", "Points", 3);
   for (std::size_t i = 0; i < n; ++i) {

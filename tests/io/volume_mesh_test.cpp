@@ -4,6 +4,8 @@
 // and tetgen -rC (consistency of .node/.ele/.face).
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -120,6 +122,15 @@ TEST(VolumeMeshOf, ExactVolumesOrientationAndBoundary) {
         if (f[k] < m.num_input_points) EXPECT_EQ(predicates::orient<3>({c.input.point(g[0]), c.input.point(g[1]), c.input.point(g[2]), &m.points[3 * std::size_t{f[k]}]}),
                   predicates::Sign::Zero);
     }
+    // Each Steiner point names an input triangle it lies on: a boundary piece of that triangle has it
+    // as a corner (input vertices name none).
+    ASSERT_EQ(m.on_triangle.size(), m.num_points());
+    std::set<std::pair<uint32_t, uint32_t>> corner_of;  // (point, tag of a boundary triangle at it)
+    for (std::size_t b = 0; b < m.num_boundary(); ++b)
+      for (int k = 0; k < 3; ++k) corner_of.insert({m.boundary[3 * b + k], m.boundary_tags[b]});
+    for (uint32_t i = 0; i < m.num_points(); ++i)
+      if (i < m.num_input_points) EXPECT_EQ(m.on_triangle[i], kNone) << i;
+      else EXPECT_TRUE(corner_of.count({i, m.on_triangle[i]})) << "Steiner point " << i << " on input triangle " << m.on_triangle[i];
     // The boundary triangles, counterclockwise seen from outside, enclose exactly the volume of the
     // tetrahedra (divergence theorem, exact rationals); that is the volume the input surface encloses,
     // exactly without Steiner points, to within their rounding with them.
@@ -139,11 +150,12 @@ struct FormatCase {
   const char* meshio;     // meshio's file_format
   bool boundary_tags;     // the format keeps them
   bool steiner_flags;     // the format keeps num_input_points
+  bool on_triangle;       // the format keeps each Steiner point's input triangle
 };
 const FormatCase kFormats[] = {
-    {MeshFormat::Medit, "out.mesh", "medit", true, false},    {MeshFormat::Vtu, "out.vtu", "vtu", true, true},
-    {MeshFormat::Gmsh41, "out.msh", "gmsh", true, false},     {MeshFormat::Gmsh22, "out22.msh", "gmsh", true, false},
-    {MeshFormat::TetGen, "out.node", "tetgen", true, false},  {MeshFormat::Abaqus, "out.inp", "abaqus", false, false},
+    {MeshFormat::Medit, "out.mesh", "medit", true, false, true},    {MeshFormat::Vtu, "out.vtu", "vtu", true, true, true},
+    {MeshFormat::Gmsh41, "out.msh", "gmsh", true, false, false},    {MeshFormat::Gmsh22, "out22.msh", "gmsh", true, false, false},
+    {MeshFormat::TetGen, "out.node", "tetgen", true, false, true},  {MeshFormat::Abaqus, "out.inp", "abaqus", false, false, false},
 };
 
 // Boundary triangles as a sorted list, each rotated to start at its smallest id (same orientation).
@@ -184,6 +196,7 @@ TEST(VolumeMeshFiles, OwnReaderReadsBackExactly) {
         EXPECT_EQ(canonical_boundary(back, false), canonical_boundary(c.mesh, false));
       }
       EXPECT_EQ(back.num_input_points, f.steiner_flags ? c.mesh.num_input_points : c.mesh.num_points());
+      EXPECT_EQ(back.on_triangle, f.on_triangle ? c.mesh.on_triangle : std::vector<uint32_t>{});
     }
 }
 

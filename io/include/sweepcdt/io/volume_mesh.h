@@ -28,6 +28,9 @@ struct VolumeMesh {
   std::vector<uint32_t> boundary;    // b x 3 point ids: the triangles of the domain boundary, ordered
                                      // counterclockwise seen from outside the material
   std::vector<uint32_t> boundary_tags;  // b: the input triangle each boundary triangle lies on (Plc::tags)
+  std::vector<uint32_t> on_triangle;    // n, or empty when unknown: kNone for an input vertex; for a
+                                        // Steiner point the input triangle it lies on (its index in
+                                        // the PLC, Triangulation::steiner_on; for surfaces also its tag)
 
   std::size_t num_points() const { return points.size() / 3; }
   std::size_t num_tetrahedra() const { return tetrahedra.size() / 4; }
