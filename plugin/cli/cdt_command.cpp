@@ -110,6 +110,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
     }
     if (input.empty()) throw UsageError("no FILE given");
     if (output.empty()) throw UsageError("no -o OUTPUT given");
+    if (options.snap > 0) throw UsageError("--snap repairs surface files (`mesh`); `cdt` takes a PLC file exactly as given");
     if (!format) format = format_of(output);
     if (!format) throw UsageError("cannot tell the format of '" + output + "' from its extension: use --format or .node .simplices (3D: .mesh .vtu .msh .inp)");
   } catch (const UsageError& e) {

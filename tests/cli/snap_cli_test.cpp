@@ -82,7 +82,12 @@ TEST(CliSnap, ToleranceMustBeAboveZeroAndAtMostOneThousandth) {
   }
   const CliRun check = run("check " + quoted(input) + " " + quoted(input) + " --snap 1", dir);
   EXPECT_EQ(check.exit_code, 2) << check.out;
-  EXPECT_TRUE(files_in(dir.path()) == std::set<std::string>{"schonhardt.off"});
+  // `cdt` reads PLC files as given: --snap there is refused, not ignored.
+  const auto plc = dir.write("square.poly", "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n0 0\n0\n");
+  const CliRun cdt = run("cdt " + quoted(plc) + " -o " + quoted(dir.path() / "square.node") + " --snap 1e-12", dir);
+  EXPECT_EQ(cdt.exit_code, 2) << cdt.out;
+  EXPECT_TRUE(cdt.says("`cdt` takes a PLC file exactly as given")) << cdt.out;
+  EXPECT_TRUE(files_in(dir.path()) == (std::set<std::string>{"schonhardt.off", "square.poly"}));
 }
 
 }  // namespace
