@@ -16,6 +16,7 @@ Options core_options(const RunOptions& options, CdtStatistics* statistics, std::
 }
 
 bool read_run_option(ArgReader& args, RunOptions& options) {
+  if (read_facets_option(args, options.facets)) return true;
   std::string v;
   if (args.value("--algorithm", v)) {
     if (v == "sweep-sphere") options.algorithm = Algorithm::SweepSphere;
@@ -26,10 +27,6 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
     if (v == "auto") options.steiner = SteinerMode::Auto;
     else if (v == "none") options.steiner = SteinerMode::None;
     else throw UsageError("--steiner must be auto or none, not '" + v + "'");
-  } else if (args.value("--facets", v)) {
-    if (v == "triangles") options.facets = FacetMode::Triangles;
-    else if (v == "coplanar") options.facets = FacetMode::Coplanar;
-    else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
   } else if (args.flag("--check")) {
     options.check = true;
   } else if (args.value("--stats", v)) {
@@ -39,6 +36,15 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
   } else {
     return false;
   }
+  return true;
+}
+
+bool read_facets_option(ArgReader& args, FacetMode& facets) {
+  std::string v;
+  if (!args.value("--facets", v)) return false;
+  if (v == "triangles") facets = FacetMode::Triangles;
+  else if (v == "coplanar") facets = FacetMode::Coplanar;
+  else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
   return true;
 }
 
