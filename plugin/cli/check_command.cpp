@@ -72,8 +72,8 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
     for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
     if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
     if (v.suggest_coplanar)
-      err << "  note: " << input << " has edge-adjacent, exactly coplanar triangles, which --facets coplanar merges\n"
-          << "  into polygons; if " << output << " was made so, check it with --facets coplanar\n";
+      err << "  note: " << output << " has the right boundary for a mesh made with --facets coplanar (edge-adjacent,\n"
+          << "  exactly coplanar input triangles merged into polygons): check it with --facets coplanar\n";
     if (fs::path(output).extension() == ".inp")
       err << "  note: Abaqus .inp rounds coordinates that do not fit CalculiX's 20-character fields, so such a file\n"
              "  cannot be exactly the CDT of its input; write .mesh, .vtu, .msh or .node to check exactly\n";

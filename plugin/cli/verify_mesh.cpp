@@ -107,6 +107,37 @@ void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Triangle, st
     problems.add(std::to_string(pieces.size() - listed) + " boundary facets of the tetrahedra are missing from the file's boundary triangles");
 }
 
+// Steps 2 and 3 (the input points are checked): the boundary of the tetrahedra is the input's
+// surface, refined. Returns it as a PLC, each piece with its tetrahedron on the positive side.
+Plc<3> verify_surface(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode mode, MeshVerification& v) {
+  Problems problems(v);
+  // 2. The facets, and the Steiner points on them.
+  const SurfaceFacets facets = group_surface_facets(input, mode);
+  v.facets = facets.num_facets();
+  const SurfacePoints on = locate_points(input, facets, mesh.points, problems);
+  v.steiner_exactly_on = on.exactly_on;
+  Plc<3> refined;
+  if (!v.ok()) return refined;
+
+  // 3. The boundary of the tetrahedra: pieces of the facets, tiling them.
+  const std::vector<Triangle> boundary = boundary_of(mesh);
+  v.boundary_triangles = boundary.size();
+  const std::vector<uint32_t> facet_of = verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
+  if (!v.ok()) return refined;
+  refined.points = mesh.points;
+  std::map<Triangle, std::pair<Triangle, uint32_t>> pieces;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    Triangle key = boundary[i];
+    std::sort(key.begin(), key.end());
+    pieces.emplace(key, std::make_pair(boundary[i], facet_of[i]));
+    refined.simplices.insert(refined.simplices.end(), boundary[i].begin(), boundary[i].end());
+    refined.exterior.push_back(ExteriorSide::Negative);
+    refined.tags.push_back(facets.first_triangle(facet_of[i]));
+  }
+  check_file_boundary(mesh, pieces, input, facets, problems, v);
+  return refined;
+}
+
 }  // namespace
 
 MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode mode) {
@@ -133,34 +164,16 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, Fa
     }
   if (!v.ok()) return v;
 
-  // 2. The facets, and the Steiner points on them.
-  const SurfaceFacets facets = group_surface_facets(input, mode);
-  v.facets = facets.num_facets();
-  const SurfacePoints on = locate_points(input, facets, mesh.points, problems);
-  v.steiner_exactly_on = on.exactly_on;
-
-  // 3. The boundary of the tetrahedra: pieces of the facets, tiling them.
-  std::vector<uint32_t> facet_of;
-  const std::vector<Triangle> boundary = boundary_of(mesh);
-  v.boundary_triangles = boundary.size();
-  if (v.ok()) facet_of = verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
+  Plc<3> refined = verify_surface(input, mesh, mode, v);
   if (!v.ok()) {
-    v.suggest_coplanar = mode == FacetMode::Triangles && group_surface_facets(input, FacetMode::Coplanar).num_facets() < facets.num_facets();
+    // A mesh made with --facets coplanar fails as triangles here; say so when it would pass.
+    if (mode == FacetMode::Triangles) {
+      MeshVerification as_coplanar;
+      verify_surface(input, mesh, FacetMode::Coplanar, as_coplanar);
+      v.suggest_coplanar = as_coplanar.ok();
+    }
     return v;
   }
-  Plc<3> refined;
-  refined.points = mesh.points;
-  std::map<Triangle, std::pair<Triangle, uint32_t>> pieces;
-  for (std::size_t i = 0; i < boundary.size(); ++i) {
-    Triangle key = boundary[i];
-    std::sort(key.begin(), key.end());
-    pieces.emplace(key, std::make_pair(boundary[i], facet_of[i]));
-    refined.simplices.insert(refined.simplices.end(), boundary[i].begin(), boundary[i].end());
-    refined.exterior.push_back(ExteriorSide::Negative);
-    refined.tags.push_back(facets.first_triangle(facet_of[i]));
-  }
-  check_file_boundary(mesh, pieces, input, facets, problems, v);
-  if (!v.ok()) return v;
 
   // 4. validate(): against the input itself when it is the surface as given.
   Triangulation<3> tri;

@@ -23,9 +23,8 @@ struct MeshVerification {
   bool file_tags = false;               // ... with tags (face ids; checked too)
   bool validated = false;               // validate() ran (all earlier checks passed)
   int perturbation_order = 0;           // the order validate() passed under (paper §6; 0 = vertex ids)
-  // Checked as FacetMode::Triangles, the mesh's boundary is not made of pieces of the input
-  // triangles while the input has edge-adjacent, exactly coplanar triangles: how a mesh made with
-  // --facets coplanar fails, so the report suggests checking it that way.
+  // Checked as FacetMode::Triangles, the mesh's boundary is not the input's surface, but it is as
+  // FacetMode::Coplanar: the mesh was likely made with --facets coplanar; the report says so.
   bool suggest_coplanar = false;
   bool ok() const { return total_problems == 0; }
 };

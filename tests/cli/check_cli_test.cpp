@@ -222,6 +222,41 @@ TEST(CliCheck, NoCdtReportsThePerturbationOrdersTried) {
   EXPECT_EQ(nlohmann::json::parse(bytes_of(stats_file))["files"][0]["perturbation_orders"], 1);
 }
 
+// Tetrahedra on the wrong side of the surface: the nested boxes' cavity (between its walls and the
+// body inside it) meshed instead of the material, over the same points. Each boundary triangle is a
+// piece of an input triangle, but with its tetrahedron outside.
+TEST(CliCheck, TetrahedraOutsideTheSurfaceAreRejected) {
+  TempDir dir;
+  const auto input = write_nested_boxes(dir);
+  io::Soup soup;
+  io::testing::add_box(soup, {2, 3, 2}, {9, 8, 7});
+  io::testing::add_box(soup, {4, 5, 3}, {6, 6, 5});
+  const auto cavity = dir.path() / "cavity.stl";
+  io::write_surface(cavity, soup, io::Format::StlBinary);
+  const io::VolumeMesh material = make_mesh(input, dir.path() / "material.mesh", dir, "--steiner none");
+  const io::VolumeMesh outside = make_mesh(cavity, dir.path() / "outside.mesh", dir, "--steiner none");
+  std::map<std::array<double, 3>, uint32_t> id;  // the input's point ids
+  for (uint32_t v = 0; v < material.num_points(); ++v) id[{material.points[3 * v], material.points[3 * v + 1], material.points[3 * v + 2]}] = v;
+  io::VolumeMesh m = material;
+  m.tetrahedra.clear();
+  for (uint32_t v : outside.tetrahedra) {
+    const auto it = id.find({outside.points[3 * v], outside.points[3 * v + 1], outside.points[3 * v + 2]});
+    ASSERT_NE(it, id.end());
+    m.tetrahedra.push_back(it->second);
+  }
+  m.regions.assign(m.num_tetrahedra(), 1);
+  m.boundary.clear();
+  m.boundary_tags.clear();
+  const auto tampered = dir.path() / "tampered.mesh";
+  io::write_volume_mesh(tampered, m, io::MeshFormat::Medit);
+  for (const char* facets : {"--facets triangles", "--facets coplanar"}) {
+    const CliRun r = check(input, tampered, dir, facets);
+    EXPECT_EQ(r.exit_code, 6) << r.out;
+    EXPECT_TRUE(r.says("has its tetrahedron on the outside of the surface")) << facets << "\n" << r.out;
+    EXPECT_FALSE(r.says("check it with --facets coplanar")) << facets << "\n" << r.out;
+  }
+}
+
 // --facets coplanar: each facet's boundary triangles tile the polygon of its coplanar input
 // triangles and carry its first triangle as face id. check --facets coplanar accepts such meshes,
 // with Steiner points on facet boundaries and inside facets (t13, torus) and without (cubevc, a
@@ -244,7 +279,7 @@ TEST(CliCheck, CoplanarFacetMeshesPassWithFacetsCoplanar) {
     EXPECT_EQ(ok.says(" exactly in the plane of their facet, the others rounded split points"), steiner) << ok.out;
     const CliRun as_triangles = check(input, output, dir);
     EXPECT_EQ(as_triangles.exit_code, 6) << as_triangles.out;
-    EXPECT_TRUE(as_triangles.says("has edge-adjacent, exactly coplanar triangles")) << as_triangles.out;
+    EXPECT_TRUE(as_triangles.says("has the right boundary for a mesh made with --facets coplanar")) << as_triangles.out;
     EXPECT_TRUE(as_triangles.says("check it with --facets coplanar")) << as_triangles.out;
   }
 }
