@@ -14,27 +14,21 @@ struct EdgeUse {
   uint32_t a, b;      // sorted vertex ids
   uint32_t triangle;
   int k;              // the triangle's edge k: (v_k, v_{k+1})
-  bool forward;       // the triangle runs a -> b
 };
-
-ExteriorSide flipped(ExteriorSide side) {
-  return side == ExteriorSide::Positive ? ExteriorSide::Negative : side == ExteriorSide::Negative ? ExteriorSide::Positive : side;
-}
 
 uint32_t root(std::vector<uint32_t>& parent, uint32_t x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
 }
 
-// The Coplanar rule for an edge with exactly the triangles of uses s and t.
+// The Coplanar rule for an edge with exactly the triangles of uses s and t: exactly coplanar. The
+// rule also asks for the material on the same side, which holds for every such edge of a surface
+// from io::import_plc: both triangles bound one shell, and the exterior notations carry any
+// triangle the importer found reversed.
 bool same_facet(const Plc<3>& input, const EdgeUse& s, const EdgeUse& t) {
   const uint32_t* a = input.simplex(s.triangle);
   const uint32_t d = input.simplex(t.triangle)[(t.k + 2) % 3];
-  if (predicates::orient<3>({input.point(a[0]), input.point(a[1]), input.point(a[2]), input.point(d)}) != predicates::Sign::Zero)
-    return false;
-  // Run the edge the same way and the triangles' orientations disagree, so must their notations.
-  const ExteriorSide other = s.forward == t.forward ? flipped(input.exterior_of(t.triangle)) : input.exterior_of(t.triangle);
-  return other == input.exterior_of(s.triangle);
+  return predicates::orient<3>({input.point(a[0]), input.point(a[1]), input.point(a[2]), input.point(d)}) == predicates::Sign::Zero;
 }
 
 }  // namespace
@@ -62,7 +56,7 @@ SurfaceFacets group_surface_facets(const Plc<3>& input, FacetMode mode) {
   for (uint32_t j = 0; j < m; ++j)
     for (int k = 0; k < 3; ++k) {
       const uint32_t p = input.simplex(j)[k], q = input.simplex(j)[(k + 1) % 3];
-      uses.push_back({std::min(p, q), std::max(p, q), j, k, p < q});
+      uses.push_back({std::min(p, q), std::max(p, q), j, k});
     }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
     return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);

@@ -4,8 +4,9 @@
 // input alone so that check does not share the code that made the mesh: with Triangles every input
 // triangle is a facet; with Coplanar two triangles sharing an edge that no third triangle has are
 // one facet when they are exactly coplanar (orient3d of one triangle and the other's third vertex
-// is zero) and have the material on the same side. Facets are numbered in the order of their first
-// (smallest) input triangle, which is the face id `mesh` gives all of a facet's triangles.
+// is zero; the material is on the same side of both, see surface_facets.cpp). Facets are numbered
+// in the order of their first (smallest) input triangle, which is the face id `mesh` gives all of
+// a facet's triangles.
 //
 // Edges are the input's edges, each once. An edge is a ridge — on the boundary of every facet that
 // has it — unless it joins the two triangles of one facet. Ridges are the segments that `--steiner

@@ -261,14 +261,20 @@ TEST(CliCheck, TetrahedraOutsideTheSurfaceAreRejected) {
 // triangles and carry its first triangle as face id. check --facets coplanar accepts such meshes,
 // with Steiner points on facet boundaries and inside facets (t13, torus) and without (cubevc, a
 // cube with CAD noise in ten facets; the nested boxes, whose cavity's facets have the material on
-// their negative side). Checked as triangles they fail, and the message says how to check them.
+// their negative side; a cube whose file gives one triangle of a face reversed, which the importer
+// notates so). Checked as triangles they fail, and the message says how to check them.
 TEST(CliCheck, CoplanarFacetMeshesPassWithFacetsCoplanar) {
   SWEEPCDT_REQUIRE_SHARED_DATA();
   TempDir dir;
+  io::Soup reversed = io::testing::cube_soup();
+  std::swap(reversed.triangles[1], reversed.triangles[2]);
+  const auto reversed_file = dir.path() / "reversed.off";
+  io::write_surface(reversed_file, reversed, io::Format::Off);
   const std::pair<fs::path, bool> cases[] = {{shared_data() / "stl_ascii/t13_data_ascii.stl", true},
                                              {shared_data() / "stl_binary/torus.stl", true},
                                              {shared_data() / "glb/cubevc.glb", false},
-                                             {write_nested_boxes(dir), false}};
+                                             {write_nested_boxes(dir), false},
+                                             {reversed_file, false}};
   for (const auto& [input, steiner] : cases) {
     const auto output = dir.path() / (input.stem().string() + ".msh");
     make_mesh(input, output, dir, "--facets coplanar");
