@@ -188,7 +188,10 @@ TEST(CliCheck, CavityAndNestedBody) {
 // Paper §6: a grid box, every unit square split along (1, 1), has no CDT under the vertex-id
 // perturbation but has one under a later order (the lexicographic one, order 2). `--steiner none`
 // meshes it exactly; the summary and --stats say which order; check finds the same order and
-// validates under it. The cube of cube_att.drc (Draco sample) likewise, under order 1.
+// validates under it. The cube of cube_att.drc (Draco sample) likewise, under order 1. So does
+// check --facets coplanar, against the boundary pieces: the same tetrahedra are a CDT of the
+// coplanar polygons (face ids left out: they name triangles). Meshed with --facets coplanar, these
+// boxes get their CDT under the vertex-id order, so this is how that path of check is reached.
 TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
   TempDir dir;
   const auto grid = dir.path() / "grid.off";
@@ -208,6 +211,14 @@ TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
     const CliRun ok = check(input, output, dir);
     EXPECT_EQ(ok.exit_code, 0) << ok.out;
     EXPECT_TRUE(ok.says("every interior facet locally Delaunay\n       under perturbation order " + std::to_string(order) + " (" + name)) << ok.out;
+    io::VolumeMesh m = io::read_volume_mesh(output);
+    m.boundary_tags.assign(m.num_boundary(), kNone);
+    const auto untagged = dir.path() / "untagged.mesh";
+    io::write_volume_mesh(untagged, m, io::MeshFormat::Medit);
+    const CliRun coplanar = check(input, untagged, dir, "--facets coplanar");
+    EXPECT_EQ(coplanar.exit_code, 0) << coplanar.out;
+    EXPECT_TRUE(coplanar.says("coplanar facets, tiling them")) << coplanar.out;
+    EXPECT_TRUE(coplanar.says("under perturbation order " + std::to_string(order) + " (" + name)) << coplanar.out;
   }
 }
 
