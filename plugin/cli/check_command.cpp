@@ -6,6 +6,7 @@
 #include "args.h"
 #include "errors.h"
 #include "exit_codes.h"
+#include "run_options.h"
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "sweepcdt/perturbation_order.h"
@@ -21,6 +22,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
   std::vector<std::string> files;
   bool quiet = false;
   double snap = 0;  // --snap TOL: the input as `mesh --snap TOL` read it
+  FacetMode facets = FacetMode::Triangles;
   try {
     ArgReader args(words);
     while (!args.done()) {
@@ -31,6 +33,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
       std::string value;
       if (args.flag("--quiet") || args.flag("-q")) quiet = true;
       else if (args.value("--snap", value)) snap = parse_snap(value);
+      else if (read_facets_option(args, facets)) continue;
       else if (args.at_option()) throw UsageError("unknown option '" + args.peek() + "'");
       else files.push_back(args.take());
     }
@@ -56,12 +59,15 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
     }
   }
 
-  const MeshVerification v = verify_mesh(plc, mesh);
+  const MeshVerification v = verify_mesh(plc, mesh, facets);
+  const bool coplanar = facets == FacetMode::Coplanar;
   if (!quiet) {
     out << input << ": " << plc.num_simplices() << " triangles, " << plc.num_points() << " vertices\n"
         << output << ": " << mesh.num_tetrahedra() << " tetrahedra, " << mesh.num_points() << " vertices ("
         << v.steiner_points << " Steiner points";
-    if (v.steiner_points) out << ", " << v.steiner_exactly_on << " exactly on their input triangle, the others rounded split points of its edges";
+    if (v.steiner_points)
+      out << ", " << v.steiner_exactly_on << (coplanar ? " exactly in the plane of their facet" : " exactly on their input triangle")
+          << ", the others rounded split points of its edges";
     out << ")\n";
   }
   if (!v.ok()) {
@@ -69,16 +75,21 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
         << (v.total_problems == 1 ? "" : "s") << "\n";
     for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
     if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
+    if (v.suggest_coplanar)
+      err << "  note: " << output << " has the right boundary for a mesh made with --facets coplanar (edge-adjacent,\n"
+          << "  exactly coplanar input triangles merged into polygons): check it with --facets coplanar\n";
     if (fs::path(output).extension() == ".inp")
       err << "  note: Abaqus .inp rounds coordinates that do not fit CalculiX's 20-character fields, so such a file\n"
              "  cannot be exactly the CDT of its input; write .mesh, .vtu, .msh or .node to check exactly\n";
     return kNotValid;
   }
   if (quiet) return kOk;
-  out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the input triangles, covering them;\n"
+  out << "valid: input vertices identical; " << v.boundary_triangles << " boundary triangles on the "
+      << (coplanar ? "input's " + std::to_string(v.facets) + " coplanar facets, tiling them;\n" : "input triangles, covering them;\n")
       << (!v.file_boundary ? "       (the file lists no boundary triangles);\n"
-          : v.file_tags    ? "       the file's boundary triangles are those, oriented outward, tagged with their input triangle;\n"
-                           : "       the file's boundary triangles are those, oriented outward (the format has no tags);\n")
+          : !v.file_tags   ? "       the file's boundary triangles are those, oriented outward (the format has no tags);\n"
+          : coplanar       ? "       the file's boundary triangles are those, oriented outward, tagged with their facet's first triangle;\n"
+                           : "       the file's boundary triangles are those, oriented outward, tagged with their input triangle;\n")
       << "       validate(): topology, orientation, constraints, domain, every interior facet locally Delaunay";
   if (v.perturbation_order > 0)
     out << "\n       under perturbation order " << v.perturbation_order << " (" << perturbation_order_name(v.perturbation_order)

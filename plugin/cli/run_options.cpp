@@ -32,6 +32,7 @@ double parse_snap(const std::string& text) {
 }
 
 bool read_run_option(ArgReader& args, RunOptions& options) {
+  if (read_facets_option(args, options.facets)) return true;
   std::string v;
   if (args.value("--algorithm", v)) {
     if (v == "sweep-sphere") options.algorithm = Algorithm::SweepSphere;
@@ -42,10 +43,6 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
     if (v == "auto") options.steiner = SteinerMode::Auto;
     else if (v == "none") options.steiner = SteinerMode::None;
     else throw UsageError("--steiner must be auto or none, not '" + v + "'");
-  } else if (args.value("--facets", v)) {
-    if (v == "triangles") options.facets = FacetMode::Triangles;
-    else if (v == "coplanar") options.facets = FacetMode::Coplanar;
-    else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
   } else if (args.value("--snap", v)) {
     options.snap = parse_snap(v);
   } else if (args.flag("--check")) {
@@ -57,6 +54,15 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
   } else {
     return false;
   }
+  return true;
+}
+
+bool read_facets_option(ArgReader& args, FacetMode& facets) {
+  std::string v;
+  if (!args.value("--facets", v)) return false;
+  if (v == "triangles") facets = FacetMode::Triangles;
+  else if (v == "coplanar") facets = FacetMode::Coplanar;
+  else throw UsageError("--facets must be triangles or coplanar, not '" + v + "'");
   return true;
 }
 

@@ -32,4 +32,7 @@ double parse_snap(const std::string& text);
 // Consumes one of the shared options at the reader's position; false if it is none of them.
 bool read_run_option(ArgReader& args, RunOptions& options);
 
+// Consumes `--facets triangles|coplanar` (also `check`'s: the mode a mesh was made with).
+bool read_facets_option(ArgReader& args, FacetMode& facets);
+
 }  // namespace sweepcdt::cli

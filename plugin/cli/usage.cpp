@@ -64,7 +64,7 @@ std::string mesh_help() {
          exit_codes_text();
 }
 
-std::string check_usage() { return "usage: sweepcdt check INPUT OUTPUT [--snap TOL] [--quiet]\n"; }
+std::string check_usage() { return "usage: sweepcdt check INPUT OUTPUT [--facets triangles|coplanar] [--snap TOL] [--quiet]\n"; }
 
 std::string check_help() {
   return check_usage() +
@@ -72,22 +72,28 @@ std::string check_help() {
          "tetrahedralization of the closed surface INPUT, exactly:\n"
          "  - OUTPUT's first vertices are INPUT's welded vertices, bit for bit, in order;\n"
          "  - every further vertex (a Steiner point) is reproduced bit for bit as the split point of\n"
-         "    two points on one edge of an input triangle (vertices or earlier Steiner points): at a\n"
+         "    two neighbouring points on an edge of a facet (vertices or earlier Steiner points): at a\n"
          "    power of two from an input vertex, else the midpoint a + (b - a)/2 — the construction\n"
          "    `--steiner auto` uses; so it lies on that edge up to the rounding of that arithmetic\n"
-         "    (exactly, when it is exactly coplanar with its triangle; the report counts which);\n"
-         "  - meshes made with --facets coplanar cannot be checked (their boundary triangles span\n"
-         "    several input triangles);\n"
+         "    (exactly, when it is exactly coplanar with its facet; the report counts which); the few\n"
+         "    points that split a fold inside a facet: the split point of any two of its points;\n"
          "  - the boundary of the tetrahedra, split at the Steiner points, is made of pieces of the\n"
-         "    input triangles, each with the input's inside on the same side, as many per input\n"
-         "    triangle as a triangulation of it with those points has, forming one patch bounded by\n"
-         "    the triangle's edges;\n"
+         "    facets, each with the input's inside on the same side, tiling each facet: every edge\n"
+         "    inside it shared by two pieces, its boundary edges split at their points each in one,\n"
+         "    every point on it a vertex;\n"
          "  - the file's boundary triangles (if it lists them) are exactly those, outward, tagged\n"
-         "    with their input triangle (if the format stores tags);\n"
+         "    with their face id (if the format stores tags);\n"
          "  - validate(): tetrahedra positively oriented and properly connected, the domain covered\n"
          "    exactly (volumes), every constraint present, every interior facet locally Delaunay\n"
          "    (without Steiner points: under the first of the perturbation orders mesh tries).\n"
-         "  --snap TOL: the input as `mesh --snap TOL` snapped it (give the same TOL).\n"
+         "\n"
+         "  --facets MODE       the --facets the mesh was made with. triangles (default): each input\n"
+         "                      triangle is a facet, its face id its index; coplanar: edge-adjacent,\n"
+         "                      exactly coplanar input triangles with the inside on one side form one\n"
+         "                      polygonal facet, its face id its first triangle's index. A mesh made\n"
+         "                      with triangles passes as coplanar too, but for its face ids\n"
+         "  --snap TOL          the input as `mesh --snap TOL` snapped it (give the same TOL)\n"
+         "  -q, --quiet         no report; problems only\n"
          "Exit 0: valid; 6: not valid (the first problems are printed); 3: INPUT or OUTPUT unreadable.\n"
          "\n" +
          exit_codes_text();
@@ -122,7 +128,7 @@ std::string info_help() {
 
 std::string general_usage() {
   return mesh_usage() +
-         "       sweepcdt check INPUT OUTPUT\n"
+         "       sweepcdt check INPUT OUTPUT [--facets triangles|coplanar]\n"
          "       sweepcdt cdt FILE -o OUTPUT\n"
          "       sweepcdt info INPUT [--json]\n"
          "       sweepcdt help [COMMAND] | --help | --version\n";

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "sweepcdt/cdt.h"
 #include "sweepcdt/io/volume_mesh.h"
-#include "sweepcdt/plc.h"
 
 namespace sweepcdt::cli {
 
@@ -16,17 +16,21 @@ struct MeshVerification {
   // What was found (for the report):
   bool input_points_moved = false;      // some input vertex differs in the mesh
   std::size_t steiner_points = 0;
-  std::size_t steiner_exactly_on = 0;   // Steiner points exactly on their input triangle
+  std::size_t steiner_exactly_on = 0;   // Steiner points exactly in the plane of their facet
+  std::size_t facets = 0;               // the input's facets under the --facets mode checked
   std::size_t boundary_triangles = 0;   // boundary facets of the tetrahedra
   bool file_boundary = false;           // the file lists boundary triangles (checked against those)
-  bool file_tags = false;               // ... with tags (input triangle ids; checked too)
+  bool file_tags = false;               // ... with tags (face ids; checked too)
   bool validated = false;               // validate() ran (all earlier checks passed)
   int perturbation_order = 0;           // the order validate() passed under (paper §6; 0 = vertex ids)
+  // Checked as FacetMode::Triangles, the mesh's boundary is not the input's surface, but it is as
+  // FacetMode::Coplanar: the mesh was likely made with --facets coplanar; the report says so.
+  bool suggest_coplanar = false;
   bool ok() const { return total_problems == 0; }
 };
 
-// `input`: io::import_plc(INPUT); `mesh`: io::read_volume_mesh(OUTPUT). Exact; never throws for a
-// wrong mesh (that is a problem in the result).
-MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh);
+// `input`: io::import_plc(INPUT); `mesh`: io::read_volume_mesh(OUTPUT); `facets`: the --facets mode
+// the mesh was made with. Exact; never throws for a wrong mesh (that is a problem in the result).
+MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode facets);
 
 }  // namespace sweepcdt::cli

@@ -52,6 +52,11 @@ TEST(CliSnap, GearwheelSnappedWithCoplanarFacetsMeshesAndValidates) {
   EXPECT_GT(mesh.num_tetrahedra(), 1000u);
   for (std::size_t i = 2; i < mesh.points.size(); i += 3)
     if (std::abs(mesh.points[i]) < 1e-16) EXPECT_EQ(mesh.points[i], 0.0) << i / 3;
+  // `check` verifies it from the file, given the same --snap and --facets; not without the snap.
+  const CliRun checked = run("check " + quoted(shared_data() / kGearwheel) + " " + quoted(out) + " --facets coplanar --snap 1e-12", dir);
+  EXPECT_EQ(checked.exit_code, 0) << checked.out;
+  const CliRun unsnapped = run("check " + quoted(shared_data() / kGearwheel) + " " + quoted(out) + " --facets coplanar", dir);
+  EXPECT_EQ(unsnapped.exit_code, 6) << unsnapped.out;
 }
 
 // A cube whose bottom face has one noisy vertex, meshed with --snap: `check` must be told the same

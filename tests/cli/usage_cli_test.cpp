@@ -21,6 +21,8 @@ TEST(CliUsage, HelpAndVersion) {
   EXPECT_EQ(run("mesh --help", dir).out, mesh_help.out);
   EXPECT_TRUE(run("check --help", dir).says("a + (b - a)/2"));
   EXPECT_TRUE(run("check --help", dir).says("power of two from an input vertex"));
+  EXPECT_TRUE(run("check --help", dir).says("[--facets triangles|coplanar]"));
+  EXPECT_TRUE(run("check --help", dir).says("polygonal facet, its face id its first triangle's index"));
   EXPECT_TRUE(run("cdt --help", dir).says(".simplices"));
   const CliRun version = run("--version", dir);
   EXPECT_EQ(version.exit_code, 0);
@@ -58,6 +60,7 @@ TEST(CliUsage, MistakesExitTwoWithUsageAndWriteNothing) {
       {"mesh " + kIcosahedron + " " + kIcosahedron + " --out-dir " + quoted(dir.path()), "would both be written to"},
       {"mesh --out-dir " + quoted(dir.path()), "no INPUT given"},
       {"check " + kIcosahedron, "check needs INPUT (the surface) and OUTPUT"},
+      {"check " + kIcosahedron + " " + out + " --facets quads", "--facets must be triangles or coplanar, not 'quads'"},
       {"check " + kIcosahedron + " " + out + " --fast", "unknown option '--fast'"},
       {"cdt x.poly", "no -o OUTPUT given"},
       {"cdt x.poly -o y.txt", "cannot tell the format of 'y.txt'"},

@@ -1,0 +1,103 @@
+#include "surface_points.h"
+
+#include <algorithm>
+
+#include "box_grid.h"
+#include "sweepcdt/predicates.h"
+#include "sweepcdt/steiner_point.h"
+
+namespace sweepcdt::cli {
+namespace {
+
+class Splits {
+ public:
+  Splits(const std::vector<double>& points, uint32_t num_input) : points_(points), n_(num_input) {}
+  const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
+
+  // Is s the split point of a and b, operation for operation? The construction takes the end with
+  // the smaller id first.
+  bool is_split(uint32_t s, uint32_t a, uint32_t b) const {
+    if (a > b) std::swap(a, b);
+    double x[3];
+    segment_split_point(p(a), a < n_, p(b), b < n_, x);
+    return std::equal(x, x + 3, p(s));
+  }
+
+  // Is s the split point of two of `candidates`? Only pairs whose box holds s can be.
+  bool splits_two_of(uint32_t s, const std::vector<uint32_t>& candidates) const {
+    const double* ps = p(s);
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+        const double* a = p(candidates[i]);
+        const double* b = p(candidates[j]);
+        bool inside = true;
+        for (int c = 0; c < 3 && inside; ++c) inside = std::min(a[c], b[c]) <= ps[c] && ps[c] <= std::max(a[c], b[c]);
+        if (inside && is_split(s, candidates[i], candidates[j])) return true;
+      }
+    return false;
+  }
+
+ private:
+  const std::vector<double>& points_;
+  uint32_t n_;
+};
+
+}  // namespace
+
+SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, const std::vector<double>& points, Problems& problems) {
+  const uint32_t n = static_cast<uint32_t>(input.num_points()), total = static_cast<uint32_t>(points.size() / 3);
+  SurfacePoints r;
+  r.on_edge.resize(facets.edges.size());
+  r.on_facet.resize(facets.num_facets());
+  r.facets_of.resize(total);
+  std::vector<uint32_t> ridges;
+  std::vector<Box> ridge_boxes, facet_boxes;
+  for (uint32_t e = 0; e < facets.edges.size(); ++e) {
+    r.on_edge[e] = {facets.edges[e].a, facets.edges[e].b};
+    if (!facets.edges[e].ridge) continue;
+    ridges.push_back(e);
+    ridge_boxes.push_back(box_of(points, r.on_edge[e]));
+  }
+  for (uint32_t f = 0; f < facets.num_facets(); ++f) {
+    auto& on = r.on_facet[f];
+    for (uint32_t j : facets.triangles[f]) on.insert(on.end(), input.simplex(j), input.simplex(j) + 3);
+    std::sort(on.begin(), on.end());
+    on.erase(std::unique(on.begin(), on.end()), on.end());
+    for (uint32_t v : on) r.facets_of[v].push_back(f);
+    facet_boxes.push_back(box_of(points, on));
+  }
+  const BoxGrid ridge_grid(std::move(ridge_boxes)), facet_grid(std::move(facet_boxes));
+  const Splits splits(points, n);
+
+  for (uint32_t s = n; s < total; ++s) {
+    const double* ps = splits.p(s);
+    auto& on = r.facets_of[s];
+    for (uint32_t k : ridge_grid.near(ps)) {
+      if (!ridge_grid.holds(k, ps)) continue;
+      auto& line = r.on_edge[ridges[k]];
+      std::size_t i = 0;
+      while (i + 1 < line.size() && !splits.is_split(s, line[i], line[i + 1])) ++i;
+      if (i + 1 == line.size()) continue;
+      line.insert(line.begin() + static_cast<std::ptrdiff_t>(i) + 1, s);
+      for (uint32_t j : facets.edges[ridges[k]].triangles) on.push_back(facets.facet_of[j]);
+      std::sort(on.begin(), on.end());
+      on.erase(std::unique(on.begin(), on.end()), on.end());
+      break;
+    }
+    if (on.empty())  // a fold point
+      for (uint32_t f : facet_grid.near(ps))
+        if (facet_grid.holds(f, ps) && splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
+    if (on.empty()) {
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the split point of two neighbouring points on " +
+                   (facets.mode == FacetMode::Triangles ? "an input edge, nor of two points of one input triangle"
+                                                        : "a facet's boundary edge, nor of two points of one facet"));
+      continue;
+    }
+    for (uint32_t f : on) r.on_facet[f].push_back(s);
+    const uint32_t* t = input.simplex(facets.first_triangle(on.front()));
+    if (predicates::orient<3>({input.point(t[0]), input.point(t[1]), input.point(t[2]), ps}) == predicates::Sign::Zero) ++r.exactly_on;
+  }
+  return r;
+}
+
+}  // namespace sweepcdt::cli

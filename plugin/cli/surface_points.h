@@ -1,0 +1,36 @@
+// Step 2 of `sweepcdt check` (verify_mesh.cpp): where each vertex of the mesh lies on the input
+// surface, exactly, without trusting the mesh. Input vertices lie on the facets of their triangles.
+// Every further vertex (a Steiner point), in the order the mesh lists them, must be reproduced bit
+// for bit by the construction of `--steiner auto` (sweepcdt/steiner_point.h) from points already
+// placed:
+//   - on a ridge (surface_facets.h): the split point of two neighbouring points on it — refine
+//     splits the current subsegments only, so each ridge's points stay in order from end to end
+//     without any geometric test; the point lies on every facet that has the ridge;
+//   - a fold point: the split point of any two points of one facet (core/src/steiner/refine.h:
+//     rounding makes some edges inside a facet folds, which are split when not Delaunay); it lies
+//     inside that facet. So do points on input edges inside a coplanar facet: a fold along one, or
+//     a mesh made with --facets triangles checked as coplanar.
+// Rounding is monotone, so a split point stays in the box of its two points: only the ridges and
+// facets whose box holds it are tried.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "problems.h"
+#include "surface_facets.h"
+
+namespace sweepcdt::cli {
+
+struct SurfacePoints {
+  std::vector<std::vector<uint32_t>> on_edge;    // per input edge: its points from a to b (ridges; else a, b)
+  std::vector<std::vector<uint32_t>> on_facet;   // per facet: the points on it, ascending
+  std::vector<std::vector<uint32_t>> facets_of;  // per mesh point: the facets it lies on, ascending
+  std::size_t exactly_on = 0;                    // Steiner points exactly in the plane of their first facet
+};
+
+// `points`: the mesh's (n x 3), the input's first (step 1). A Steiner point that is not reproduced
+// is a problem, and lies on no facet.
+SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, const std::vector<double>& points, Problems& problems);
+
+}  // namespace sweepcdt::cli
