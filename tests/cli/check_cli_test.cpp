@@ -34,6 +34,15 @@ CliRun check(const fs::path& input, const fs::path& output, const TempDir& dir, 
   return run("check " + quoted(input) + " " + quoted(output) + " " + options, dir);
 }
 
+// `check --facets coplanar` of `mesh` written without face ids (as a triangles-made mesh, or one
+// under a later perturbation order, would pass as coplanar but for them).
+CliRun check_untagged_as_coplanar(const fs::path& input, io::VolumeMesh mesh, const TempDir& dir) {
+  mesh.boundary_tags.assign(mesh.num_boundary(), kNone);
+  const auto untagged = dir.path() / "untagged.mesh";
+  io::write_volume_mesh(untagged, mesh, io::MeshFormat::Medit);
+  return check(input, untagged, dir, "--facets coplanar");
+}
+
 Sign orient(const io::VolumeMesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   const auto p = [&](uint32_t i) { return m.points.data() + 3 * std::size_t{i}; };
   return predicates::orient<3>({p(a), p(b), p(c), p(d)});
@@ -211,11 +220,7 @@ TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
     const CliRun ok = check(input, output, dir);
     EXPECT_EQ(ok.exit_code, 0) << ok.out;
     EXPECT_TRUE(ok.says("every interior facet locally Delaunay\n       under perturbation order " + std::to_string(order) + " (" + name)) << ok.out;
-    io::VolumeMesh m = io::read_volume_mesh(output);
-    m.boundary_tags.assign(m.num_boundary(), kNone);
-    const auto untagged = dir.path() / "untagged.mesh";
-    io::write_volume_mesh(untagged, m, io::MeshFormat::Medit);
-    const CliRun coplanar = check(input, untagged, dir, "--facets coplanar");
+    const CliRun coplanar = check_untagged_as_coplanar(input, io::read_volume_mesh(output), dir);
     EXPECT_EQ(coplanar.exit_code, 0) << coplanar.out;
     EXPECT_TRUE(coplanar.says("coplanar facets, tiling them")) << coplanar.out;
     EXPECT_TRUE(coplanar.says("under perturbation order " + std::to_string(order) + " (" + name)) << coplanar.out;
@@ -393,10 +398,7 @@ TEST(CliCheck, TrianglesMeshCheckedAsCoplanarDiffersInFaceIdsOnly) {
   EXPECT_FALSE(r.says(": Steiner point")) << r.out;
   EXPECT_FALSE(r.says("edge (")) << r.out;
 
-  mesh.boundary_tags.assign(mesh.num_boundary(), kNone);
-  const auto untagged = dir.path() / "untagged.mesh";
-  io::write_volume_mesh(untagged, mesh, io::MeshFormat::Medit);
-  const CliRun ok = check(input, untagged, dir, "--facets coplanar");
+  const CliRun ok = check_untagged_as_coplanar(input, mesh, dir);
   EXPECT_EQ(ok.exit_code, 0) << ok.out;
   EXPECT_TRUE(ok.says("the file's boundary triangles are those, oriented outward (the format has no tags)")) << ok.out;
 }
