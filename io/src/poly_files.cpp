@@ -5,18 +5,10 @@
 
 namespace sweepcdt::io::detail {
 
-NodeList read_node_list(TextScanner& in, int dimension, const std::filesystem::path& node_file) {
-  const int64_t count = in.to_integer(in.next_token(), "number of points", 0, INT64_MAX);
-  if (count == 0) {
-    // The points are in the .node file; the rest of this line is read past.
-    in.skip_rest_of_line();
-    const std::string bytes = read_file_bytes(node_file);
-    const std::string name = node_file.string();
-    TextScanner nodes(bytes, name, '#');
-    NodeList list = read_node_list(nodes, dimension, node_file);
-    if (list.points.empty()) nodes.fail(InputErrorKind::Truncated, "no points");
-    return list;
-  }
+namespace {
+
+// The node list at the scanner's position, which has `count` > 0 points.
+NodeList read_nodes(TextScanner& in, int dimension, int64_t count) {
   const int64_t dim = in.to_integer(in.next_token(), "dimension");
   if (dim != dimension) in.fail(InputErrorKind::Unsupported, "dimension " + std::to_string(dim) + " (this reader reads " + std::to_string(dimension) + ")");
   const int64_t attributes = in.to_integer(in.next_token(), "number of attributes", 0, 1 << 20);
@@ -38,6 +30,22 @@ NodeList read_node_list(TextScanner& in, int dimension, const std::filesystem::p
     for (int64_t a = 0; a < attributes + markers; ++a) in.to_double(in.next_token(), "an attribute or marker");
   }
   return list;
+}
+
+}  // namespace
+
+NodeList read_node_list(TextScanner& in, int dimension, const std::filesystem::path& node_file) {
+  const int64_t count = in.to_integer(in.next_token(), "number of points", 0, INT64_MAX);
+  if (count > 0) return read_nodes(in, dimension, count);
+  // The points are in the .node file; the rest of this line is read past. The .node file itself
+  // must list them: 0 there would send the reader back to the same file, without end.
+  in.skip_rest_of_line();
+  const std::string bytes = read_file_bytes(node_file);
+  const std::string name = node_file.string();
+  TextScanner nodes(bytes, name, '#');
+  const int64_t node_count = nodes.to_integer(nodes.next_token(), "number of points", 0, INT64_MAX);
+  if (node_count == 0) nodes.fail(InputErrorKind::Truncated, "no points");
+  return read_nodes(nodes, dimension, node_count);
 }
 
 int poly_dimension(const std::string& bytes, const std::filesystem::path& file) {

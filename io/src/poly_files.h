@@ -11,7 +11,7 @@ namespace sweepcdt::io::detail {
 
 // A node list "<count> <dimension> <attributes> <markers>" then "<id> <coords> [attrs] [marker]".
 // `count` == 0 in a .poly/.smesh means "in the .node file beside it": then `node_file` is read.
-// Appends the points; returns the first id (0 or 1), which every later id is relative to.
+// The points, and the first id (0 or 1), which every later id is relative to.
 struct NodeList {
   std::vector<double> points;
   int64_t base = 0;

@@ -173,6 +173,18 @@ TEST(TrianglePoly, MalformedFilesNameTheLine) {
     EXPECT_EQ(e.kind(), InputErrorKind::Unreadable);
     EXPECT_NE(std::string(e.what()).find("g.node"), std::string::npos) << e.what();
   }
+  // A .node file that also says "0 points" (which would mean "see the .node file") is refused, not
+  // followed back to itself until the stack overflows; both dimensions.
+  for (const char* dimension : {"2", "3"}) {
+    dir.write("h.node", std::string("0 ") + dimension + " 0 0\n");
+    try {
+      read_plc_file(dir.write("h.poly", std::string("0 ") + dimension + " 0 0\n0 0\n0\n"));
+      ADD_FAILURE() << "h.poly was accepted, dimension " << dimension;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.kind(), InputErrorKind::Truncated) << e.what();
+      EXPECT_NE(std::string(e.what()).find("h.node:1:"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A 2-cube as six square facets (TetGen .poly, markers 1..6), optionally with a unit cube inside.
