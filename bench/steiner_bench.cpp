@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
       "{\"file\": \"%s\", \"points\": %zu, \"triangles\": %zu, \"facets\": %lu, \"steiner_points\": %lu, \"rounds\": %lu, "
-      "\"flips\": %lu, \"tets\": %zu, \"seconds\": %.3f, \"seconds_refine\": %.3f, \"seconds_build\": %.3f, "
+      "\"flips\": %lu, \"tets\": %zu, \"seconds\": %.3f, \"seconds_setup\": %.3f, \"seconds_build\": %.3f, "
       "\"seconds_finish\": %.3f, \"error\": \"%s\"}\n",
       argv[1], plc.num_points(), plc.num_simplices(), static_cast<unsigned long>(stats.facets),
       static_cast<unsigned long>(stats.steiner_points), static_cast<unsigned long>(stats.steiner_rounds),

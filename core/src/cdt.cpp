@@ -113,8 +113,7 @@ template <int D>
 Triangulation<D> run_in_order(const Plc<D>& plc, const std::vector<uint32_t>& rank, const Options& options, CdtStatistics& stats,
                               Stopwatch& clock, Plc<D>* triangulated) {
   Triangulation<D> tri = run(detail::relabeled(plc, rank), options, stats, clock, triangulated);
-  detail::restore_ids(tri, rank);
-  if (triangulated) detail::restore_ids(*triangulated, rank);
+  detail::restore_ids(tri, triangulated, rank);
   tri.perturbation_rank = rank;
   return tri;
 }

@@ -20,6 +20,13 @@ void move_points(std::vector<double>& points, const std::vector<uint32_t>& map) 
   points = std::move(moved);
 }
 
+// Renames `points` (n x D) and `simplices` by `map`: point v moves to map[v], ids follow.
+template <int D>
+void apply(std::vector<double>& points, std::vector<uint32_t>& simplices, const std::vector<uint32_t>& map) {
+  move_points<D>(points, map);
+  rename(simplices, map);
+}
+
 std::vector<uint32_t> inverse(const std::vector<uint32_t>& rank) {
   std::vector<uint32_t> inv(rank.size());
   for (uint32_t v = 0; v < rank.size(); ++v) inv[rank[v]] = v;
@@ -31,29 +38,20 @@ std::vector<uint32_t> inverse(const std::vector<uint32_t>& rank) {
 template <int D>
 Plc<D> relabeled(const Plc<D>& plc, const std::vector<uint32_t>& rank) {
   Plc<D> out = plc;
-  move_points<D>(out.points, rank);
-  rename(out.simplices, rank);
+  apply<D>(out.points, out.simplices, rank);
   return out;
 }
 
 template <int D>
-void restore_ids(Triangulation<D>& tri, const std::vector<uint32_t>& rank) {
+void restore_ids(Triangulation<D>& tri, Plc<D>* triangulated, const std::vector<uint32_t>& rank) {
   const std::vector<uint32_t> back = inverse(rank);
-  move_points<D>(tri.points, back);
-  rename(tri.simplices, back);
-}
-
-template <int D>
-void restore_ids(Plc<D>& plc, const std::vector<uint32_t>& rank) {
-  const std::vector<uint32_t> back = inverse(rank);
-  move_points<D>(plc.points, back);
-  rename(plc.simplices, back);
+  apply<D>(tri.points, tri.simplices, back);
+  if (triangulated) apply<D>(triangulated->points, triangulated->simplices, back);
 }
 
 #define SWEEPCDT_INSTANTIATE(D)                                                      \
   template Plc<D> relabeled<D>(const Plc<D>&, const std::vector<uint32_t>&);         \
-  template void restore_ids<D>(Triangulation<D>&, const std::vector<uint32_t>&);     \
-  template void restore_ids<D>(Plc<D>&, const std::vector<uint32_t>&);
+  template void restore_ids<D>(Triangulation<D>&, Plc<D>*, const std::vector<uint32_t>&);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)

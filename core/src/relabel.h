@@ -19,10 +19,9 @@ namespace sweepcdt::detail {
 template <int D>
 Plc<D> relabeled(const Plc<D>& plc, const std::vector<uint32_t>& rank);
 
-// Undo relabeled() on what was computed from its PLC.
+// Undo relabeled() on what was computed from its PLC: the triangulation and, if given, the PLC it
+// triangulated.
 template <int D>
-void restore_ids(Triangulation<D>& tri, const std::vector<uint32_t>& rank);
-template <int D>
-void restore_ids(Plc<D>& plc, const std::vector<uint32_t>& rank);
+void restore_ids(Triangulation<D>& tri, Plc<D>* triangulated, const std::vector<uint32_t>& rank);
 
 }  // namespace sweepcdt::detail

@@ -8,7 +8,6 @@
 #include <map>
 #include <unordered_map>
 
-#include "facet_keys.h"
 #include "volume_mesh_formats.h"
 
 namespace sweepcdt::io::detail {

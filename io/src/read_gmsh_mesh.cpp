@@ -48,7 +48,7 @@ struct Reader {
       in.fail(InputErrorKind::IndexOutOfRange, "element names node " + std::to_string(tag) + ", which does not exist");
     return index_of_tag[tag];
   }
-  // An element of `type` with tag `tag`; false for a type read past.
+  // An element of `type` with tag `tag` (types 1 and 15, edges and points, are read past).
   void element(int64_t tag, int64_t type, int64_t label) {
     const int corners = type == 4 ? 4 : type == 2 ? 3 : type == 1 ? 2 : type == 15 ? 1 : 0;
     if (corners == 0) in.fail(InputErrorKind::Unsupported, "element type " + std::to_string(type) + " (only 4 tetrahedron, 2 triangle; 1 and 15 are read past)");

@@ -66,7 +66,7 @@ class Vtu {
     }
     return {};
   }
-  // The numbers of an array, exactly `count` of them (doubles when `real`).
+  // The numbers of an array, exactly `count` of them, as T.
   template <class T>
   std::vector<T> numbers(const Array& a, uint64_t count, const char* what) const {
     std::vector<T> out;
@@ -113,7 +113,6 @@ VolumeMesh read_vtu(std::string_view bytes, const std::string& file) {
   if (x.find("<Piece", piece + 1) != std::string_view::npos) x.fail_at(piece, InputErrorKind::Unsupported, "more than one Piece");
   const uint64_t n = x.count_attribute(piece, "NumberOfPoints"), cells = x.count_attribute(piece, "NumberOfCells");
   if (n >= kNone) x.fail_at(piece, InputErrorKind::AbsurdCount, "more than 2^32 - 2 points");
-  const std::size_t end = x.size();
 
   const std::size_t points_at = x.find("<Points", piece), cells_at = x.find("<Cells", piece);
   if (points_at == std::string_view::npos || cells_at == std::string_view::npos) x.fail_at(piece, InputErrorKind::Truncated, "no Points or no Cells");
@@ -177,7 +176,6 @@ VolumeMesh read_vtu(std::string_view bytes, const std::string& file) {
       m.boundary_tags.push_back(tag_from_file(g));
     }
   }
-  (void)end;
   return m;
 }
 

@@ -52,7 +52,7 @@ struct TetGenFiles {
 };
 TetGenFiles tetgen_texts(const VolumeMesh& mesh);
 
-// Readers of the bytes of one file (TetGen: the three files' bytes, face may be absent).
+// Readers of the bytes of one file; TetGen's reads its files by name (the .face may be absent).
 VolumeMesh read_medit(std::string_view bytes, const std::string& file);
 VolumeMesh read_vtu(std::string_view bytes, const std::string& file);
 VolumeMesh read_gmsh(std::string_view bytes, const std::string& file);

@@ -33,8 +33,12 @@ double relative_plane_distance(const Plc<3>& plc, const uint32_t* t, const doubl
 }
 
 // Distance from p to the line through u and v, relative to the largest coordinate involved.
-double relative_line_distance(const double* u, const double* v, const double* p) {
+// Distance of p from the segment u-v relative to the coordinates' size: from its line when p projects
+// strictly between u and v, else 1 (not on the segment).
+double relative_segment_distance(const double* u, const double* v, const double* p) {
   const double d[3] = {v[0] - u[0], v[1] - u[1], v[2] - u[2]}, e[3] = {p[0] - u[0], p[1] - u[1], p[2] - u[2]};
+  const double along = (d[0] * e[0] + d[1] * e[1] + d[2] * e[2]) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(along > 0 && along < 1)) return 1;
   const double cross = std::hypot(d[1] * e[2] - d[2] * e[1], d[2] * e[0] - d[0] * e[2], d[0] * e[1] - d[1] * e[0]);
   double scale = 0;
   for (const double* q : {u, v, p})
@@ -89,7 +93,7 @@ CdtStatistics expect_steiner_cdt(const Plc<3>& plc, const std::string& what, boo
     EXPECT_LT(relative_plane_distance(plc, t, p), 1e-15) << what << " Steiner point " << k;
     double nearest_edge = 1;
     for (int i = 0; i < 3; ++i)
-      nearest_edge = std::min(nearest_edge, relative_line_distance(plc.point(t[i]), plc.point(t[(i + 1) % 3]), p));
+      nearest_edge = std::min(nearest_edge, relative_segment_distance(plc.point(t[i]), plc.point(t[(i + 1) % 3]), p));
     if (nearest_edge >= 1e-14) EXPECT_TRUE(inside_triangle(plc, t, p)) << what << " Steiner point " << k;
   }
   // Every refined triangle carries its input triangle as its tag.

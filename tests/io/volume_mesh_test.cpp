@@ -116,7 +116,7 @@ TEST(VolumeMeshOf, ExactVolumesOrientationAndBoundary) {
       boundary += six_volume(kOrigin, &m.points[3 * std::size_t{f[0]}], &m.points[3 * std::size_t{f[1]}], &m.points[3 * std::size_t{f[2]}]);
       ASSERT_LT(m.boundary_tags[b], c.input.num_simplices()) << "boundary triangle " << b << " has no input triangle";
       // Each boundary triangle lies in the plane of its input triangle (Steiner points only to within
-      // rounding: core/src/steiner/segment_recovery.h).
+      // rounding: sweepcdt/steiner_point.h).
       const uint32_t* g = c.input.simplex(m.boundary_tags[b]);
       for (int k = 0; k < 3; ++k)
         if (f[k] < m.num_input_points) EXPECT_EQ(predicates::orient<3>({c.input.point(g[0]), c.input.point(g[1]), c.input.point(g[2]), &m.points[3 * std::size_t{f[k]}]}),

@@ -48,7 +48,8 @@ struct CdtStatistics {
                                          // edge flips that gave each its 2D CDT
   // Paper §6: runs made, one per perturbation order tried (1 unless the vertex-id order found no CDT
   // after exact ties), and the order of the result (0 = vertex ids; sweepcdt/perturbation_order.h).
-  // The counts and times above add up all runs.
+  // The times and the sweep counters add up all runs; the Steiner and facet counts and `simplices`
+  // are those of the run returned.
   uint32_t perturbation_orders = 0, perturbation_order = 0;
   double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
 };

@@ -2,7 +2,8 @@
 //
 // It decides exactly (through sweepcdt::predicates) whether `tri` is a constrained Delaunay
 // triangulation of `plc` (of its perturbed points, paper §6):
-//   topology     ids in range, perturbation_rank empty or a permutation of the points, no repeated ids, every facet in at most two simplices, neighbours
+//   shape        array sizes agree; perturbation_rank empty or a permutation of the points;
+//   topology     ids in range, no repeated ids, every facet in at most two simplices, neighbours
 //                symmetric and equal to the facet adjacency;
 //   orientation  every simplex strictly positively oriented; at every interior facet the two
 //                simplices lie on opposite sides;

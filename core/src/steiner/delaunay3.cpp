@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "facet_groups.h"
 #include "sweepcdt/error.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
@@ -413,11 +414,6 @@ class Delaunay3 {
     }
     if (2 * ridges_paired_ != 3 * boundary_.size() || !have_finite)
       throw Error("delaunay_tetrahedra: cavity boundary is not a closed surface (internal error)");
-  }
-
-  static uint64_t edge_key(uint32_t a, uint32_t b) {
-    if (a > b) std::swap(a, b);
-    return (uint64_t{a} << 32) | b;
   }
 
   // Ridge pairing: a small open-addressing table keyed by the edge, cleared by bumping a generation

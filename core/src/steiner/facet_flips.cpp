@@ -19,16 +19,8 @@ constexpr uint32_t kAuxiliaryId = kNone - 1;
 
 class Flipper {
  public:
-  explicit Flipper(FacetTriangles f) : f_(f), drop_(f.facet.size(), -1) {
-    for (uint32_t t = 0; t < f_.triangles.size(); ++t)
-      for (int i = 0; i < 3; ++i) {
-        const uint64_t key = edge_key(f_.triangles[t][i], f_.triangles[t][(i + 1) % 3]);
-        if (f_.segments.count(key)) continue;
-        auto [it, fresh] = sides_.try_emplace(key, std::array<uint32_t, 2>{t, kNone});
-        if (fresh) pending_.push_back(key);
-        else it->second[1] = t;
-      }
-  }
+  explicit Flipper(FacetTriangles f)
+      : f_(f), drop_(f.triangles.size(), -1), sides_(interior_edge_sides(f.triangles, f.segments, &pending_)) {}
 
   uint64_t run() {
     // Lawson's flips end for exactly coplanar facets; the cap guards facets coplanar only to within
@@ -135,9 +127,9 @@ class Flipper {
   }
 
   FacetTriangles f_;
-  std::vector<int> drop_;  // per triangle (its facet's projection; triangles of one facet agree)
-  std::unordered_map<uint64_t, std::array<uint32_t, 2>> sides_;  // non-segment edge -> its two triangles
-  std::vector<uint64_t> pending_;
+  std::vector<int> drop_;          // per triangle (its facet's projection; triangles of one facet agree)
+  std::vector<uint64_t> pending_;  // declared before sides_, which fills it
+  EdgeSides sides_;                // non-segment edge -> its two triangles
 };
 
 }  // namespace

@@ -18,8 +18,8 @@ namespace sweepcdt::detail {
 
 struct FacetTriangles {
   const std::vector<double>& points;                 // n x 3
-  std::vector<std::array<uint32_t, 3>>& triangles;   // oriented alike within each facet
-  const std::vector<uint32_t>& facet;                // per triangle
+  std::vector<std::array<uint32_t, 3>>& triangles;   // oriented alike within each facet; two that share
+                                                     // an edge that is not a segment are in one facet
   const std::unordered_set<uint64_t>& segments;      // never flipped
   // Per point: the input segment (two input vertex ids, sorted) a Steiner point lies on, or
   // {kNone, kNone} for input points. A flip never joins two points of one segment.

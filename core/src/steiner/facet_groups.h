@@ -8,6 +8,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -18,6 +19,24 @@ namespace sweepcdt::detail {
 inline uint64_t edge_key(uint32_t a, uint32_t b) {
   if (a > b) std::swap(a, b);
   return (uint64_t{a} << 32) | b;
+}
+
+// Each edge of `triangles` that is not a segment, with the triangle(s) on its sides ({t, kNone} while
+// only one is known); `first_seen`, if given, gets the keys in triangle order (deterministic, unlike
+// the map's iteration order).
+using EdgeSides = std::unordered_map<uint64_t, std::array<uint32_t, 2>>;
+inline EdgeSides interior_edge_sides(const std::vector<std::array<uint32_t, 3>>& triangles, const std::unordered_set<uint64_t>& segments,
+                                     std::vector<uint64_t>* first_seen = nullptr) {
+  EdgeSides sides;
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const uint64_t key = edge_key(triangles[t][i], triangles[t][(i + 1) % 3]);
+      if (segments.count(key)) continue;
+      auto [it, fresh] = sides.try_emplace(key, std::array<uint32_t, 2>{t, kNone});
+      if (!fresh) it->second[1] = t;
+      else if (first_seen) first_seen->push_back(key);
+    }
+  return sides;
 }
 
 // The vertex of triangle t that is not on edge `key` (an edge of t).

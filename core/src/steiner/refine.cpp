@@ -102,14 +102,7 @@ class Refiner {
   // refined PLC without a CDT (thingi_1706459.stl: 20 of 11787 folds). Such folds become segments —
   // no longer flipped, split like any other — and are returned, each once, in triangle order.
   std::vector<uint64_t> fold_edges_not_in(DelaunayEdges& delaunay) {
-    std::unordered_map<uint64_t, std::array<uint32_t, 2>> sides;  // facet-interior edge -> its two triangles
-    for (uint32_t j = 0; j < tris_.size(); ++j)
-      for (int i = 0; i < 3; ++i) {
-        const uint64_t key = edge_key(tris_[j][i], tris_[j][(i + 1) % 3]);
-        if (groups_.segments.count(key)) continue;
-        auto [it, fresh] = sides.try_emplace(key, std::array<uint32_t, 2>{j, kNone});
-        if (!fresh) it->second[1] = j;
-      }
+    const EdgeSides sides = interior_edge_sides(tris_, groups_.segments);  // facet-interior edge -> its two triangles
     std::vector<uint64_t> folds;
     for (uint32_t j = 0; j < tris_.size(); ++j)
       for (int i = 0; i < 3; ++i) {
@@ -125,11 +118,7 @@ class Refiner {
     return folds;
   }
 
-  void flip_facets() {
-    std::vector<uint32_t> facet(tris_.size());
-    for (std::size_t t = 0; t < tris_.size(); ++t) facet[t] = groups_.facet[original_[t]];
-    r_.flips += flip_facets_to_cdt({points_, tris_, facet, groups_.segments, on_segment_});
-  }
+  void flip_facets() { r_.flips += flip_facets_to_cdt({points_, tris_, groups_.segments, on_segment_}); }
 
   // The concentric-shell rule (refine.h): returns the new point's id.
   uint32_t add_split_point(uint64_t key) {

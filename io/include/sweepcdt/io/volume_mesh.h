@@ -6,7 +6,7 @@
 //        ──volume_mesh_of(tri, triangulated)──► VolumeMesh ──write_volume_mesh()──► .mesh .vtu .msh .node/.ele/.face .inp
 //
 // Every writer writes to a temporary file in the target folder and renames it at the end, so a failure
-// never leaves a partial or stale file under the requested name.
+// never leaves a partial file under the requested name (the file there before, if any, stays).
 #pragma once
 #include <cstdint>
 #include <filesystem>
