@@ -10,7 +10,6 @@
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "sweepcdt/perturbation_order.h"
-#include "run_options.h"
 #include "usage.h"
 #include "verify_mesh.h"
 

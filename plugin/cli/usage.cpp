@@ -108,7 +108,7 @@ std::string cdt_help() {
   return cdt_usage() +
          "\nThe CDT of a piecewise linear complex in any dimension 2..5: Triangle .poly (2D), TetGen .poly or\n"
          ".smesh (3D), sweepcdt .plc (any dimension; see io/README.md).\n"
-         "  -o, --output FILE   .node (Triangle .node/.ele in 2D, TetGen .node/.ele/.face in 3D),\n"
+         "  -o, --output FILE   .node (.node/.ele: Triangle's in 2D, TetGen's in 3D; --format tetgen adds .face),\n"
          "                      .simplices (any dimension), or in 3D any volume format of `mesh`\n"
          "  --format F          node, simplices, or (3D) mesh, vtu, msh, msh22, tetgen, inp\n"
          "  --steiner none|auto none (default): the PLC exactly; auto: Steiner points (3D only)\n"
@@ -128,7 +128,7 @@ std::string info_help() {
 
 std::string general_usage() {
   return mesh_usage() +
-         "       sweepcdt check INPUT OUTPUT [--facets triangles|coplanar]\n"
+         "       sweepcdt check INPUT OUTPUT [--facets triangles|coplanar] [--snap TOL]\n"
          "       sweepcdt cdt FILE -o OUTPUT\n"
          "       sweepcdt info INPUT [--json]\n"
          "       sweepcdt help [COMMAND] | --help | --version\n";

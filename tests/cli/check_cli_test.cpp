@@ -191,6 +191,8 @@ TEST(CliCheck, CavityAndNestedBody) {
   const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "s.json"))["files"][0];
   EXPECT_EQ(stats["input_triangles"], 36);
   EXPECT_EQ(stats["regions"], 2) << "the shell between box and cavity, and the body inside";
+  // Each Steiner point on a closed triangulated surface adds two triangles to its 36.
+  EXPECT_EQ(stats["boundary_triangles"], 36 + 2 * stats["steiner_points"].get<int>());
   EXPECT_TRUE(ok.says("valid: input vertices identical; " + std::to_string(stats["boundary_triangles"].get<int>()) + " boundary triangles")) << ok.out;
 }
 
@@ -202,11 +204,12 @@ TEST(CliCheck, CavityAndNestedBody) {
 // coplanar polygons (face ids left out: they name triangles). Meshed with --facets coplanar, these
 // boxes get their CDT under the vertex-id order, so this is how that path of check is reached.
 TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
+  SWEEPCDT_REQUIRE_SHARED_DATA();
   TempDir dir;
   const auto grid = dir.path() / "grid.off";
   io::write_surface(grid, fixtures::grid_box_surface(2), io::Format::Off);
-  std::vector<std::tuple<fs::path, int, std::string>> cases{{grid, 2, "coordinates, lexicographically"}};
-  if (fs::exists(shared_data() / "drc/cube_att.drc")) cases.emplace_back(shared_data() / "drc/cube_att.drc", 1, "most constrained vertices first");
+  const std::vector<std::tuple<fs::path, int, std::string>> cases{{grid, 2, "coordinates, lexicographically"},
+                                                                  {shared_data() / "drc/cube_att.drc", 1, "most constrained vertices first"}};
   for (const auto& [input, order, name] : cases) {
     const auto output = dir.path() / (input.stem().string() + ".mesh");
     const auto stats_file = dir.path() / "s.json";

@@ -85,6 +85,7 @@ TEST(CliProgress, CtrlCCancelsABatch) {
   EXPECT_TRUE(files_in(out).empty());
   const auto stats = nlohmann::json::parse(bytes_of(dir.path() / "stats.json"));
   EXPECT_EQ(stats["exit_code"], 130);
+  ASSERT_EQ(stats["files"].size(), 3u);
   for (const auto& f : stats["files"]) EXPECT_EQ(f["status"], "cancelled") << f;
 }
 

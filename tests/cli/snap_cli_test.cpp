@@ -53,8 +53,13 @@ TEST(CliSnap, GearwheelSnappedWithCoplanarFacetsMeshesAndValidates) {
   // The mesh's points are the snapped input's: no z between -1e-16 and 1e-16 other than 0.
   const io::VolumeMesh mesh = io::read_volume_mesh(out);
   EXPECT_GT(mesh.num_tetrahedra(), 1000u);
+  std::size_t on_bottom = 0;
   for (std::size_t i = 2; i < mesh.points.size(); i += 3)
-    if (std::abs(mesh.points[i]) < 1e-16) EXPECT_EQ(mesh.points[i], 0.0) << i / 3;
+    if (std::abs(mesh.points[i]) < 1e-16) {
+      EXPECT_EQ(mesh.points[i], 0.0) << i / 3;
+      ++on_bottom;
+    }
+  EXPECT_GT(on_bottom, 241u);  // the snapped points and those at 0 before
   // `check` verifies it from the file, given the same --snap and --facets; not without the snap.
   const CliRun checked = run("check " + quoted(shared_data() / kGearwheel) + " " + quoted(out) + " --facets coplanar --snap 1e-12", dir);
   EXPECT_EQ(checked.exit_code, 0) << checked.out;
