@@ -274,6 +274,26 @@ TEST(WriteTriangulation, NodeEleAndSimplices) {
   EXPECT_EQ(back.tetrahedra, tri.simplices);
   EXPECT_EQ(back.regions, tri.regions);
   EXPECT_EQ(back.points, tri.points);
+  // Orientation as TetGen defines it, read from the file's text (our reader undoes the writer's
+  // swap, so the round trip alone cannot tell; tetgen -r reorients silently): every tetrahedron
+  // a b c d as listed has det[b - a, c - a, d - a] > 0, exactly (mpq).
+  {
+    std::ifstream ele(dir.path() / "c.ele");
+    std::size_t count = 0, corners = 0, attributes = 0;
+    ele >> count >> corners >> attributes;
+    ASSERT_EQ(count, tri.num_simplices());
+    for (std::size_t t = 0; t < count; ++t) {
+      std::size_t id = 0, v[4], region = 0;
+      ele >> id >> v[0] >> v[1] >> v[2] >> v[3];
+      if (attributes) ele >> region;
+      mpq_class m[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k) m[r][k] = mpq_class(tri.point(static_cast<uint32_t>(v[r + 1] - 1))[k]) - mpq_class(tri.point(static_cast<uint32_t>(v[0] - 1))[k]);
+      const mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      EXPECT_GT(det, 0) << "tetrahedron " << id;
+    }
+  }
   if (testing::require_tool("tetgen", "tetgen")) {
     const auto run = testing::run_tool("timeout 60 tetgen -rCNEF " + testing::quoted(dir.path() / "c"));
     EXPECT_NE(run.output.find("the mesh appears to be consistent"), std::string::npos) << run.output;
