@@ -96,6 +96,16 @@ TetGenNames tetgen_names(const std::filesystem::path& file) {
   return {stem.string() + ".node", stem.string() + ".ele", stem.string() + ".face"};
 }
 
+}  // namespace detail
+
+std::vector<std::filesystem::path> volume_mesh_files(const std::filesystem::path& file, MeshFormat format) {
+  if (format != MeshFormat::TetGen) return {file};
+  const auto names = detail::tetgen_names(file);
+  return {names.node, names.ele, names.face};
+}
+
+namespace detail {
+
 void check_writable(const VolumeMesh& m, const std::string& file) {
   auto refuse = [&](const std::string& why) { fail(InputErrorKind::Unsupported, file, Location::none(), "cannot write this mesh: " + why); };
   if (m.points.size() % 3 || m.tetrahedra.size() % 4 || m.boundary.size() % 3) refuse("an array's size is not a multiple of its width");

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <optional>
 #include <ostream>
-#include <set>
 #include <variant>
 
 #include "args.h"
@@ -14,6 +13,7 @@
 #include "errors.h"
 #include "exit_codes.h"
 #include "progress.h"
+#include "report.h"
 #include "stats.h"
 #include "sweepcdt/io/plc_file.h"
 #include "sweepcdt/io/volume_mesh.h"
@@ -71,9 +71,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
   writing = true;
   if constexpr (D == 3) {
     if (format.volume) {
-      const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
-      r.boundary_triangles = mesh.num_boundary();
-      r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
+      const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
       io::write_volume_mesh(output, mesh, *format.volume);
       r.seconds_write = since(t);
       if (*format.volume == io::MeshFormat::Abaqus) warn_if_rounded(output, mesh, r);
@@ -143,25 +141,8 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
     }
   }
   r.seconds_total = since(start);
-  if (r.code == kOk) {
-    console.info(input + " -> " + output + ": " + std::to_string(r.dimension) + "D, " + summary_of(r));
-    for (const auto& w : r.warnings) console.line("sweepcdt: warning: " + w);
-  } else {
-    console.line("sweepcdt: " + r.message);
-    if (!options.quiet)
-      for (const auto& d : r.details) console.line("  " + d);
-  }
-  int code = r.code;
-  if (!options.stats_file.empty()) {
-    try {
-      write_stats(options.stats_file, RunSummary{"cdt", options, 1, r.seconds_total, code}, {r});
-    } catch (...) {
-      const Failure f = describe_current_exception(options.stats_file, true);
-      console.line("sweepcdt: " + f.message);
-      code = worst(code, f.code);
-    }
-  }
-  return code;
+  report_file(console, input + " -> " + output + ": " + std::to_string(r.dimension) + "D, " + summary_of(r), r, options.quiet);
+  return write_stats_if_asked(console, RunSummary{"cdt", options, 1, r.seconds_total, r.code}, {r});
 }
 
 }  // namespace sweepcdt::cli

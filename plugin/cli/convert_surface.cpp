@@ -1,7 +1,6 @@
 #include "convert_surface.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -25,15 +24,7 @@ void fail(FileResult& r, Failure f) {
 // The files write_volume_mesh() made for `target` (TetGen: three beside each other).
 void remove_mesh_files(const MeshTarget& target) {
   std::error_code ec;
-  if (target.format != io::MeshFormat::TetGen) {
-    std::filesystem::remove(target.file, ec);
-    return;
-  }
-  std::filesystem::path base(target.file);
-  std::string ext = base.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext == ".node" || ext == ".ele" || ext == ".face") base.replace_extension();
-  for (const char* part : {".node", ".ele", ".face"}) std::filesystem::remove(base.string() + part, ec);
+  for (const auto& file : io::volume_mesh_files(target.file, target.format)) std::filesystem::remove(file, ec);
 }
 
 // The tolerance the hint below suggests: far above rounding noise, far below modelling detail.
@@ -86,9 +77,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
       return r;
     }
 
-    const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
-    r.boundary_triangles = mesh.num_boundary();
-    r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
+    const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
 
     // Last chance to stop: once the writer runs, the file is completed (it is atomic either way).
     throw_if_interrupted();
@@ -107,6 +96,13 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
   }
   r.seconds_total = since(start);
   return r;
+}
+
+io::VolumeMesh counted_volume_mesh(const Triangulation<3>& tri, const Plc<3>& triangulated, FileResult& r) {
+  io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
+  r.boundary_triangles = mesh.num_boundary();
+  r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
+  return mesh;
 }
 
 // Abaqus .inp holds coordinates in CalculiX's 20-character fields, so io rounds the ones that do not

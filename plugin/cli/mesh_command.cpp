@@ -20,6 +20,7 @@
 #include "errors.h"
 #include "exit_codes.h"
 #include "progress.h"
+#include "report.h"
 #include "stats.h"
 #include "usage.h"
 
@@ -185,14 +186,7 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
       FileProgress progress(console, label, threads == 1);
       results[i] = convert_surface(req.inputs[i], targets[i], req.options, progress);
       const FileResult& r = results[i];
-      if (r.code == kOk) {
-        if (!req.options.quiet) console.line(label + " -> " + names_of(r.outputs) + ": " + summary_of(r));
-        for (const auto& w : r.warnings) console.line("sweepcdt: warning: " + w);
-      } else {
-        console.line("sweepcdt: " + r.message);
-        if (!req.options.quiet)
-          for (const auto& d : r.details) console.line("  " + d);
-      }
+      report_file(console, label + " -> " + names_of(r.outputs) + ": " + summary_of(r), r, req.options.quiet);
     }
   };
   if (threads <= 1) {
@@ -221,17 +215,8 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
     for (const auto& r : results) ok += r.code == kOk;
     console.line(std::to_string(ok) + " of " + std::to_string(n) + " files converted");
   }
-  if (!req.options.stats_file.empty()) {
-    RunSummary run{"mesh", req.options, threads, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), code};
-    try {
-      write_stats(req.options.stats_file, run, results);
-    } catch (...) {
-      const Failure f = describe_current_exception(req.options.stats_file, true);
-      console.line("sweepcdt: " + f.message);
-      code = worst(code, f.code);
-    }
-  }
-  return code;
+  const RunSummary run{"mesh", req.options, threads, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), code};
+  return write_stats_if_asked(console, run, results);
 }
 
 }  // namespace sweepcdt::cli

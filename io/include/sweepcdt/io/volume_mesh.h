@@ -56,6 +56,9 @@ std::optional<MeshFormat> mesh_format_named(const std::string& word);
 // From the file name's extension, or nullopt.
 std::optional<MeshFormat> mesh_format_of(const std::filesystem::path& file);
 
+// The files write_volume_mesh(file, ..., format) writes: `file`, or TetGen's three beside each other.
+std::vector<std::filesystem::path> volume_mesh_files(const std::filesystem::path& file, MeshFormat format);
+
 // Throws InputError (kind Unreadable, naming the file) if it cannot be written; nothing is left behind.
 void write_volume_mesh(const std::filesystem::path& file, const VolumeMesh& mesh, MeshFormat format);
 
