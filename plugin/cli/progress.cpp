@@ -101,9 +101,9 @@ void FileProgress::report(const std::string& phase, uint64_t done, uint64_t tota
     }
     std::snprintf(buf, sizeof buf, "  %.1f s", t);
     console_.bar(text + buf);
-  } else if (phase != phase_) {
+  } else if (phase != logged_phase_) {
     // Log lines: one per phase change, so a log of a long batch shows where each file is.
-    phase_ = phase;
+    phase_ = logged_phase_ = phase;
     char buf[32];
     std::snprintf(buf, sizeof buf, " (%.1f s)", t);
     console_.info(label_ + ": " + phase + buf);

@@ -61,7 +61,9 @@ class FileProgress {
   Console& console_;
   std::string label_;
   bool bar_;
-  std::string phase_;
+  std::string phase_;         // the phase last reported
+  std::string logged_phase_;  // the phase of the last log line: a phase that began in the quiet
+                              // first second is logged once the second has passed
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double last_draw_ = -1;
 };

@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <csignal>
+#include <functional>
+#include <mutex>
 #include <thread>
 
 #include <fcntl.h>
@@ -21,9 +23,15 @@ namespace {
 // Gift-wrapping these takes far longer than the tests wait: they are always interrupted.
 const fs::path kLongInput = shared_data() / "drc/knot1.drc";
 
-// Runs sweepcdt with `words`, stderr to `log`, and sends SIGINT after `delay`. The exit status, and
-// how long the process took to end after the signal.
-std::pair<int, double> run_and_interrupt(std::vector<std::string> words, const std::string& log, std::chrono::milliseconds delay,
+// Hang guard only: the runs below reach the awaited output within a few seconds of work; this bounds
+// a broken run, it is not a timing the tests rely on.
+constexpr auto kHangGuard = std::chrono::minutes(5);
+
+// Runs sweepcdt with `words`, stderr to `log` (or to `stderr_fd`), and sends SIGINT once `reached()`
+// says the output shows the point under test — an event of the run itself, never a fixed delay, so
+// the tests do not depend on how fast the machine is. The exit status, and how long the process took
+// to end after the signal.
+std::pair<int, double> run_and_interrupt(std::vector<std::string> words, const std::string& log, const std::function<bool()>& reached,
                                          int stderr_fd = -1) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -43,12 +51,28 @@ std::pair<int, double> run_and_interrupt(std::vector<std::string> words, const s
   pid_t pid = 0;
   if (posix_spawn(&pid, SWEEPCDT_CLI, &actions, nullptr, argv.data(), stderr_fd >= 0 ? env.data() : environ) != 0) return {-1, 0};
   posix_spawn_file_actions_destroy(&actions);
-  std::this_thread::sleep_for(delay);
+  int status = 0;
+  const auto give_up = std::chrono::steady_clock::now() + kHangGuard;
+  while (!reached()) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) {  // ended before the awaited output: the caller's checks say why
+      ADD_FAILURE() << "sweepcdt ended before the awaited output";
+      return {status, 0};
+    }
+    if (std::chrono::steady_clock::now() > give_up) {
+      ADD_FAILURE() << "the awaited output did not come (hang guard)";
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
   ::kill(pid, SIGINT);
   const auto sent = std::chrono::steady_clock::now();
-  int status = 0;
   ::waitpid(pid, &status, 0);
   return {status, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count()};
+}
+
+// `reached` for run_and_interrupt: the log file holds `text`.
+std::function<bool()> log_says(const std::string& log, const std::string& text) {
+  return [=] { return bytes_of(log).find(text) != std::string::npos; };
 }
 
 // Ctrl-C during a long run (gift-wrapping the knot takes minutes): exit 130, a message, no output.
@@ -58,7 +82,8 @@ TEST(CliProgress, CtrlCCancelsCleanly) {
   const std::string input = kLongInput.string();
   const std::string log = (dir.path() / ".log").string();
   const auto [status, seconds] =
-      run_and_interrupt({input, "-o", (dir.path() / "knot1.mesh").string(), "--algorithm", "giftwrap"}, log, std::chrono::milliseconds(1500));
+      run_and_interrupt({input, "-o", (dir.path() / "knot1.mesh").string(), "--algorithm", "giftwrap"}, log,
+                        log_says(log, input + ": gift-wrapping ("));
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
   EXPECT_LT(seconds, 10.0) << "cancellation took too long";
@@ -77,7 +102,9 @@ TEST(CliProgress, CtrlCCancelsABatch) {
       {"mesh", kLongInput.string(), (shared_data() / "glb/moon.glb").string(),
        (shared_data() / "off/icosahedron.off").string(), "--out-dir", out.string(), "--threads", "2", "--algorithm", "giftwrap",
        "--stats", (dir.path() / "stats.json").string()},
-      log, std::chrono::milliseconds(1500));
+      log, [&] {  // both threads busy gift-wrapping, so the third file cannot have started
+        return log_says(log, kLongInput.string() + ": gift-wrapping (")() && log_says(log, "moon.glb: gift-wrapping (")();
+      });
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
   EXPECT_LT(seconds, 10.0) << "cancellation took too long";
@@ -97,22 +124,35 @@ TEST(CliProgress, BarOnATerminalLogLinesOtherwise) {
   int master = -1, slave = -1;
   ASSERT_EQ(::openpty(&master, &slave, nullptr, nullptr, nullptr), 0);
   std::string screen;
+  std::mutex screen_mutex;
   std::thread reader([&] {
     char buf[4096];
-    for (ssize_t n; (n = ::read(master, buf, sizeof buf)) > 0;) screen.append(buf, static_cast<std::size_t>(n));
+    for (ssize_t n; (n = ::read(master, buf, sizeof buf)) > 0;) {
+      std::lock_guard lock(screen_mutex);
+      screen.append(buf, static_cast<std::size_t>(n));
+    }
   });
-  const auto [status, seconds] = run_and_interrupt({kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"},
-                                                   "", std::chrono::milliseconds(2500), slave);
+  // The bar is drawn once the work passes a second; interrupt when it has shown a percentage.
+  const std::string bar = "\r\033[K" + kLongInput.string() + ": gift-wrapping [";
+  const auto [status, seconds] = run_and_interrupt(
+      {kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"}, "",
+      [&] {
+        std::lock_guard lock(screen_mutex);
+        const auto at = screen.find(bar);
+        return at != std::string::npos && screen.find('%', at) != std::string::npos;
+      },
+      slave);
   ::close(slave);  // the reader sees EOF (EIO) once the child's copy is gone too
   reader.join();
   ::close(master);
   EXPECT_EQ(WEXITSTATUS(status), 130) << screen;
-  EXPECT_NE(screen.find("\r\033[K" + kLongInput.string() + ": gift-wrapping ["), std::string::npos) << screen;
+  EXPECT_NE(screen.find(bar), std::string::npos) << screen;
   EXPECT_NE(screen.find("%"), std::string::npos) << screen;
 
   const std::string log = (dir.path() / ".log").string();
   const auto [log_status, log_seconds] =
-      run_and_interrupt({kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"}, log, std::chrono::milliseconds(2500));
+      run_and_interrupt({kLongInput.string(), "-o", (dir.path() / "k.mesh").string(), "--algorithm", "giftwrap"}, log,
+                        log_says(log, kLongInput.string() + ": gift-wrapping ("));
   EXPECT_EQ(WEXITSTATUS(log_status), 130);
   const std::string text = bytes_of(log);
   EXPECT_NE(text.find(kLongInput.string() + ": gift-wrapping ("), std::string::npos) << text;
