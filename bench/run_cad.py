@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""CAD parts and the shared meshes: sweepcdt's default command against TetGen on the same surfaces,
+in the same run (issue 13). For each input: Steiner points, wall-clock seconds and peak memory of the
+whole process (reading and writing included) for
+
+  - `sweepcdt IN -o OUT.mesh` with the default options, and with --facets triangles when the default
+    merges coplanar facets (so both of sweepcdt's modes are measured);
+  - `tetgen -pQ` (merges coplanar facets within its tolerance: compare with coplanar facets) and
+    `tetgen -pQM` (keeps every input triangle: compare with --facets triangles);
+
+and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
+
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [FILE...]
+  (default files: tests/data/cad/*.stl, *.obj and the closed shared meshes)
+"""
+import argparse
+import glob
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SHARED = os.path.join(os.path.dirname(ROOT), "shared", "data")
+SHARED_CLOSED = ["off/femur.off", "off/icosahedron.off", "stl_ascii/t13_data_ascii.stl", "stl_binary/spot.stl",
+                 "stl_binary/torus.stl", "stl_ascii/gearwheel_ascii.stl", "stl_binary/thingi_1706459.stl",
+                 "drc/knot1.drc", "glb/moon.glb", "drc/cube_att.drc"]
+TIMEOUT = 600
+
+
+def timed(cmd, cwd):
+    """(ok, seconds, peak MiB) of one run of cmd under /usr/bin/time."""
+    start = time.monotonic()
+    try:
+        p = subprocess.run(["/usr/bin/time", "-f", "%M"] + cmd, cwd=cwd, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, text=True, timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        return False, float(TIMEOUT), 0.0
+    seconds = time.monotonic() - start
+    lines = p.stderr.strip().splitlines()
+    peak = int(lines[-1]) / 1024 if lines and lines[-1].isdigit() else 0.0
+    return p.returncode == 0, seconds, peak
+
+
+def run_sweepcdt(cli, path, work, extra):
+    out = os.path.join(work, "out.mesh")
+    stats = os.path.join(work, "stats.json")
+    ok, seconds, peak = timed([cli, path, "-o", out, "--quiet", "--stats", stats] + extra, work)
+    points, message = None, ""
+    if os.path.exists(stats):
+        with open(stats) as f:
+            entry = json.load(f)["files"][0]
+        points = entry.get("steiner_points") if ok else None
+        message = entry.get("message", "")
+    for f in (out, stats):
+        if os.path.exists(f):
+            os.remove(f)
+    return {"ok": ok, "seconds": seconds, "peak": peak, "points": points, "message": message}
+
+
+def run_tetgen(off, work, switches, input_points):
+    ok, seconds, peak = timed(["tetgen", switches, "in.off"], work)
+    node = os.path.join(work, "in.1.node")
+    points = None
+    if ok and os.path.exists(node):
+        with open(node) as f:
+            points = int(f.readline().split()[0]) - input_points
+    for f in os.listdir(work):
+        if f.startswith("in.1."):
+            os.remove(os.path.join(work, f))
+    return {"ok": ok and points is not None, "seconds": seconds, "peak": peak, "points": points}
+
+
+def median_run(repeat, fn):
+    runs = [fn() for _ in range(repeat)]
+    best = runs[0]
+    best["seconds"] = statistics.median(r["seconds"] for r in runs)
+    best["peak"] = statistics.median(r["peak"] for r in runs)
+    return best
+
+
+def cell(r):
+    if not r["ok"]:
+        return "fails", f"{r['seconds']:.2f}", ""
+    return str(r["points"]), f"{r['seconds']:.2f}", f"{r['peak']:.0f}"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("files", nargs="*")
+    args = ap.parse_args()
+    args.build = os.path.abspath(args.build)
+    cli = os.path.join(args.build, "plugin", "cli", "sweepcdt")
+    converter = os.path.join(args.build, "bench", "steiner_bench")
+    if not shutil.which("tetgen"):
+        sys.exit("tetgen not found (scripts/setup.sh installs it)")
+    files = args.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.stl")) +
+                                 glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.obj"))) + \
+        [os.path.join(SHARED, f) for f in SHARED_CLOSED if os.path.exists(os.path.join(SHARED, f))]
+    print("| input | triangles | sweepcdt default: points | s | MiB | --facets triangles: points | s | "
+          "tetgen -pQ: points | s | MiB | tetgen -pQM: points | s | points default/-pQ | time default/-pQ | memory default/-pQ |")
+    print("|" + "---|" * 16)
+    totals = {"default": 0, "triangles": 0, "pQ": 0, "pQM": 0}
+    failures = {"default": 0, "triangles": 0, "pQ": 0, "pQM": 0}
+    with tempfile.TemporaryDirectory() as work:
+        for path in files:
+            # TetGen reads the welded surface sweepcdt sees, as OFF (steiner_bench --off writes it).
+            info = subprocess.run([converter, path, "--off", os.path.join(work, "in.off"), "--count-only"],
+                                  capture_output=True, text=True)
+            try:
+                counts = json.loads(info.stdout)
+            except json.JSONDecodeError:
+                print(f"| {os.path.basename(path)} | unreadable: {info.stderr.strip()[:80]} |")
+                continue
+            default = median_run(args.repeat, lambda: run_sweepcdt(cli, path, work, []))
+            triangles = median_run(args.repeat, lambda: run_sweepcdt(cli, path, work, ["--facets", "triangles"]))
+            pq = median_run(args.repeat, lambda: run_tetgen(path, work, "-pQ", counts["points"]))
+            pqm = median_run(args.repeat, lambda: run_tetgen(path, work, "-pQM", counts["points"]))
+            for key, r in (("default", default), ("triangles", triangles), ("pQ", pq), ("pQM", pqm)):
+                if r["ok"]:
+                    totals[key] += r["points"]
+                else:
+                    failures[key] += 1
+            d, t, q, m = cell(default), cell(triangles), cell(pq), cell(pqm)
+            ratio = lambda a, b, fmt: fmt.format(a / b) if b else "—"
+            both = default["ok"] and pq["ok"]
+            print(f"| {os.path.basename(path)} | {counts['triangles']} | {d[0]} | {d[1]} | {d[2]} | {t[0]} | {t[1]} | "
+                  f"{q[0]} | {q[1]} | {q[2]} | {m[0]} | {m[1]} | "
+                  f"{ratio(default['points'], pq['points'], '{:.2f}') if both else '—'} | "
+                  f"{ratio(default['seconds'], pq['seconds'], '{:.1f}x') if both else '—'} | "
+                  f"{ratio(default['peak'], pq['peak'], '{:.2f}') if both else '—'} |", flush=True)
+    print()
+    print(f"Steiner points in total (failures): sweepcdt default {totals['default']} ({failures['default']}), "
+          f"--facets triangles {totals['triangles']} ({failures['triangles']}), tetgen -pQ {totals['pQ']} ({failures['pQ']}), "
+          f"tetgen -pQM {totals['pQM']} ({failures['pQM']})")
+
+
+if __name__ == "__main__":
+    main()
