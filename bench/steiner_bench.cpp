@@ -2,6 +2,7 @@
 // welded surface as OFF so bench/run_steiner.sh can hand the same input to TetGen.
 //
 //   steiner_bench FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]
+//                      [--count-only]    (only the welded counts, and the OFF file: bench/run_cad.py)
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -21,7 +22,14 @@ int main(int argc, char** argv) {
   Options options;
   options.steiner = SteinerMode::Auto;
   std::string off;
-  for (int i = 2; i + 1 < argc; i += 2) {
+  bool count_only = false;
+  for (int i = 2; i < argc; i += 2) {
+    if (std::string(argv[i]) == "--count-only") {
+      count_only = true;
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc) break;
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--facets") options.facets = value == "coplanar" ? FacetMode::Coplanar : FacetMode::Triangles;
     else if (flag == "--steiner") options.steiner = value == "none" ? SteinerMode::None : SteinerMode::Auto;
@@ -31,6 +39,10 @@ int main(int argc, char** argv) {
   }
   const Plc<3> plc = io::import_plc(argv[1]);
   if (!off.empty()) io::write_surface(off, plc, io::Format::Off);
+  if (count_only) {
+    std::printf("{\"file\": \"%s\", \"points\": %zu, \"triangles\": %zu}\n", argv[1], plc.num_points(), plc.num_simplices());
+    return 0;
+  }
   CdtStatistics stats;
   options.statistics = &stats;
   std::string error;

@@ -89,6 +89,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
   std::optional<OutputFormat> format;
   RunOptions options;
   options.steiner = SteinerMode::None;  // a PLC is meant exactly as given; Steiner points on request
+  options.facets = FacetMode::Triangles;  // its simplices are the constraints, as given
   try {
     ArgReader args(words);
     std::string v;

@@ -21,7 +21,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
   std::vector<std::string> files;
   bool quiet = false;
   double snap = 0;  // --snap TOL: the input as `mesh --snap TOL` read it
-  FacetMode facets = FacetMode::Triangles;
+  FacetMode facets = mesh_defaults().facets;  // as `mesh` makes them
   try {
     ArgReader args(words);
     while (!args.done()) {
@@ -74,6 +74,10 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
         << (v.total_problems == 1 ? "" : "s") << "\n";
     for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
     if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
+    // The default mode is mesh's: a mesh made with --facets triangles fails it for its face ids.
+    if (coplanar && verify_mesh(plc, mesh, FacetMode::Triangles).ok())
+      err << "  note: " << output << " is the CDT of the input triangles, each a facet of its own: it was made with\n"
+          << "  --facets triangles; check it with --facets triangles\n";
     if (v.suggest_coplanar)
       err << "  note: " << output << " has the right boundary for a mesh made with --facets coplanar (edge-adjacent,\n"
           << "  exactly coplanar input triangles merged into polygons): check it with --facets coplanar\n";

@@ -33,7 +33,7 @@ constexpr double kSuggestedSnap = 1e-12;
 // Why an input without a CDT may only look that way: faces flat by design but stored with rounding
 // noise (sweepcdt/io/snap.h). Empty unless --snap would make some faces exactly flat (or when the
 // input cannot be re-read).
-std::string snap_hint(const std::string& input) {
+std::string snap_hint(const std::string& input, FacetMode facets) {
   try {
     io::SnapReport report;
     io::snap_coordinates(io::weld(io::read_soup(input)), kSuggestedSnap, report);
@@ -42,7 +42,8 @@ std::string snap_hint(const std::string& input) {
     std::snprintf(moved, sizeof moved, "%.2g", report.largest_move);
     return "hint: moving " + std::to_string(report.points_moved) + " vertices by up to " + moved +
            " (CAD rounding noise?) would make the triangles at " + std::to_string(report.edges_flattened) +
-           " edges exactly coplanar: `--snap 1e-12 --facets coplanar` makes faces that are flat by design exactly flat";
+           " edges exactly coplanar: `" + (facets == FacetMode::Coplanar ? "--snap 1e-12" : "--snap 1e-12 --facets coplanar") +
+           "` makes faces that are flat by design exactly flat, each one facet";
   } catch (...) {
     return {};
   }
@@ -91,7 +92,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
   } catch (...) {
     fail(r, describe_current_exception(input, writing));
     if (r.code == kNoCdt && options.snap == 0)
-      if (std::string hint = snap_hint(input); !hint.empty()) r.details.push_back(std::move(hint));
+      if (std::string hint = snap_hint(input, options.facets); !hint.empty()) r.details.push_back(std::move(hint));
     for (std::size_t k = 0; k < written; ++k) remove_mesh_files(targets[k]);
   }
   r.seconds_total = since(start);

@@ -11,8 +11,8 @@ namespace sweepcdt::cli {
 
 struct RunOptions {
   Algorithm algorithm = Algorithm::SweepSphere;
-  SteinerMode steiner = SteinerMode::Auto;
-  FacetMode facets = FacetMode::Triangles;  // --facets triangles|coplanar (3D)
+  SteinerMode steiner = mesh_defaults().steiner;  // --steiner auto|none (`cdt` sets none)
+  FacetMode facets = mesh_defaults().facets;      // --facets triangles|coplanar (3D)
   double snap = 0;  // --snap TOL: snap surface coordinates first (sweepcdt/io/snap.h); 0 = exact input
   bool check = false;      // --check: validate the result again before writing it
   std::string stats_file;  // --stats FILE.json

@@ -11,17 +11,12 @@ namespace {
 
 class Splits {
  public:
-  Splits(const std::vector<double>& points, uint32_t num_input) : points_(points), n_(num_input) {}
+  explicit Splits(const std::vector<double>& points) : points_(points) {}
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
 
-  // Is s the split point of a and b, operation for operation? The construction takes the end with
-  // the smaller id first.
-  bool is_split(uint32_t s, uint32_t a, uint32_t b) const {
-    if (a > b) std::swap(a, b);
-    double x[3];
-    segment_split_point(p(a), a < n_, p(b), b < n_, x);
-    return std::equal(x, x + 3, p(s));
-  }
+  // Is s a point that refine can make on the segment ab: the rounded a + t (b - a), or b + t (a - b),
+  // for some t in (0, 1)? Exact (sweepcdt/steiner_point.h).
+  bool is_split(uint32_t s, uint32_t a, uint32_t b) const { return is_point_on_segment(p(a), p(b), p(s)); }
 
   // Is s the split point of two of `candidates`? Only pairs whose box holds s can be.
   bool splits_two_of(uint32_t s, const std::vector<uint32_t>& candidates) const {
@@ -39,7 +34,6 @@ class Splits {
 
  private:
   const std::vector<double>& points_;
-  uint32_t n_;
 };
 
 }  // namespace
@@ -67,7 +61,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, co
     facet_boxes.push_back(box_of(points, on));
   }
   const BoxGrid ridge_grid(std::move(ridge_boxes)), facet_grid(std::move(facet_boxes));
-  const Splits splits(points, n);
+  const Splits splits(points);
 
   for (uint32_t s = n; s < total; ++s) {
     const double* ps = splits.p(s);
@@ -88,9 +82,9 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, co
       for (uint32_t f : facet_grid.near(ps))
         if (facet_grid.holds(f, ps) && splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
     if (on.empty()) {
-      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not the split point of two neighbouring points on " +
-                   (facets.mode == FacetMode::Triangles ? "an input edge, nor of two points of one input triangle"
-                                                        : "a facet's boundary edge, nor of two points of one facet"));
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not a rounded point between two neighbouring points on " +
+                   (facets.mode == FacetMode::Triangles ? "an input edge, nor between two points of one input triangle"
+                                                        : "a facet's boundary edge, nor between two points of one facet"));
       continue;
     }
     for (uint32_t f : on) r.on_facet[f].push_back(s);

@@ -1,12 +1,12 @@
 // Step 2 of `sweepcdt check` (verify_mesh.cpp): where each vertex of the mesh lies on the input
 // surface, exactly, without trusting the mesh. Input vertices lie on the facets of their triangles.
-// Every further vertex (a Steiner point), in the order the mesh lists them, must be reproduced bit
-// for bit by the construction of `--steiner auto` (sweepcdt/steiner_point.h) from points already
-// placed:
-//   - on a ridge (surface_facets.h): the split point of two neighbouring points on it — refine
+// Every further vertex (a Steiner point), in the order the mesh lists them, must be exactly a point
+// that `--steiner auto` can make (sweepcdt/steiner_point.h: the rounded a + t (b - a) for some t in
+// (0, 1), decided exactly) from two points already placed:
+//   - on a ridge (surface_facets.h): a point between two neighbouring points on it — refine
 //     splits the current subsegments only, so each ridge's points stay in order from end to end
 //     without any geometric test; the point lies on every facet that has the ridge;
-//   - a fold point: the split point of any two points of one facet (core/src/steiner/refine.h:
+//   - a fold point: a point between any two points of one facet (core/src/steiner/refine.h:
 //     rounding makes some edges inside a facet folds, which are split when not Delaunay); it lies
 //     inside that facet. So do points on input edges inside a coplanar facet: a fold along one, or
 //     a mesh made with --facets triangles checked as coplanar.

@@ -5,12 +5,12 @@
 // 2. The input's facets (surface_facets.h): with --facets triangles each input triangle; with
 //    --facets coplanar the polygons of edge-adjacent, exactly coplanar triangles, grouped here by
 //    the documented rule. Steiner points (surface_points.h): `--steiner auto` splits segments
-//    (sweepcdt/steiner_point.h: at a power of two from an input vertex, or at a + (b - a)/2) in
-//    double arithmetic, so they lie on the segment only up to rounding — an exact "point on edge"
-//    test would reject correct meshes, and any tolerance would be a guess. Instead each Steiner
-//    point (in order) must be reproduced bit for bit by that construction from two neighbouring
-//    points on a facet boundary edge — or, for the few points that split a fold inside a facet
-//    (core/src/steiner/refine.cpp), from two points of that facet. Points exactly coplanar with
+//    (sweepcdt/steiner_point.h: the rounded a + t (b - a)) in double arithmetic, so they lie on the
+//    segment only up to rounding — an exact "point on edge" test would reject correct meshes, and
+//    any tolerance would be a guess. Instead each Steiner point (in order) must be exactly that
+//    construction, for some t, from two neighbouring points on a facet boundary edge — or, for the
+//    few points that split a fold inside a facet (core/src/steiner/refine.cpp), from two points of
+//    that facet. Points exactly coplanar with
 //    their facet are counted separately.
 // 3. The refined surface (verify_facet_patches.h): the boundary facets of the tetrahedra (facets of
 //    one tetrahedron). Each must have all three vertices on one facet, with the tetrahedron on the

@@ -145,8 +145,8 @@ TEST(CliCheck, AcceptsWhatWasWrittenAndRejectsTamperedMeshes) {
   EXPECT_TRUE(unreadable.says(junk.string())) << unreadable.out;
 }
 
-// With Steiner points, each must be reproduced bit for bit as the split point cdt() makes on an
-// input edge (sweepcdt/steiner_point.h).
+// With Steiner points, each must be exactly a point cdt() can make on an input edge: the rounded
+// a + t (b - a) of two neighbouring points on it (sweepcdt/steiner_point.h).
 TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   TempDir dir;
   const auto input = write_schonhardt(dir, "prism.off");
@@ -158,13 +158,15 @@ TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   EXPECT_TRUE(ok.says("(" + std::to_string(mesh.num_points() - 6) + " Steiner points, ")) << ok.out;
 
   io::VolumeMesh m = mesh;
-  m.points[3 * 6] = std::nextafter(m.points[3 * 6], 10.0);  // the first Steiner point, one ulp off
+  // The first Steiner point moved off its edge by far more than rounding (one ulp along the edge
+  // could still be the rounding of another point of it: sweepcdt/steiner_point.h).
+  m.points[3 * 6] += 1e-9, m.points[3 * 6 + 1] -= 2e-9, m.points[3 * 6 + 2] += 3e-9;
   const auto tampered = dir.path() / "tampered.vtu";
   io::write_volume_mesh(tampered, m, io::MeshFormat::Vtu);
   const CliRun r = check(input, tampered, dir);
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
-  EXPECT_TRUE(r.says("is not the split point of two neighbouring points on an input edge, nor of two points of one input triangle")) << r.out;
+  EXPECT_TRUE(r.says("is not a rounded point between two neighbouring points on a facet's boundary edge, nor between two points of one facet")) << r.out;
 }
 
 // A box with a box-shaped cavity (given outward: the importer reverses it) and a body inside the
@@ -213,14 +215,14 @@ TEST(CliCheck, MeshesMadeUnderALaterPerturbationOrder) {
   for (const auto& [input, order, name] : cases) {
     const auto output = dir.path() / (input.stem().string() + ".mesh");
     const auto stats_file = dir.path() / "s.json";
-    const CliRun r = run(quoted(input) + " --steiner none -o " + quoted(output) + " --stats " + quoted(stats_file), dir);
+    const CliRun r = run(quoted(input) + " --steiner none --facets triangles -o " + quoted(output) + " --stats " + quoted(stats_file), dir);
     ASSERT_EQ(r.exit_code, 0) << r.out;
     EXPECT_TRUE(r.says("0 Steiner points, perturbation order " + std::to_string(order) + " (" + name + ")")) << r.out;
     const auto stats = nlohmann::json::parse(bytes_of(stats_file))["files"][0];
     EXPECT_EQ(stats["perturbation_order"], order) << input;
     EXPECT_GT(stats["perturbation_orders"].get<int>(), 1) << input;
     EXPECT_EQ(stats["steiner_points"], 0) << input;
-    const CliRun ok = check(input, output, dir);
+    const CliRun ok = check(input, output, dir, "--facets triangles");
     EXPECT_EQ(ok.exit_code, 0) << ok.out;
     EXPECT_TRUE(ok.says("every interior facet locally Delaunay\n       under perturbation order " + std::to_string(order) + " (" + name)) << ok.out;
     const CliRun coplanar = check_untagged_as_coplanar(input, io::read_volume_mesh(output), dir);
@@ -302,7 +304,7 @@ TEST(CliCheck, CoplanarFacetMeshesPassWithFacetsCoplanar) {
     EXPECT_TRUE(ok.says("coplanar facets, tiling them;")) << ok.out;
     EXPECT_TRUE(ok.says("tagged with their facet's first triangle;")) << ok.out;
     EXPECT_EQ(ok.says(" exactly in the plane of their facet, the others rounded split points"), steiner) << ok.out;
-    const CliRun as_triangles = check(input, output, dir);
+    const CliRun as_triangles = check(input, output, dir, "--facets triangles");
     EXPECT_EQ(as_triangles.exit_code, 6) << as_triangles.out;
     EXPECT_TRUE(as_triangles.says("has the right boundary for a mesh made with --facets coplanar")) << as_triangles.out;
     EXPECT_TRUE(as_triangles.says("check it with --facets coplanar")) << as_triangles.out;
@@ -335,8 +337,8 @@ TEST(CliCheck, CoplanarCheckRejectsTamperedMeshes) {
   }
   {
     io::VolumeMesh m = mesh;
-    m.points[3 * n + 2] = std::nextafter(m.points[3 * n + 2], 1e300);
-    rejects(m, {"Steiner point " + std::to_string(n) + " (", "is not the split point of two neighbouring points on a facet's boundary edge, nor of two points of one facet"});
+    m.points[3 * n] += 1e-9, m.points[3 * n + 1] -= 2e-9, m.points[3 * n + 2] += 3e-9;  // off its edge, not along it
+    rejects(m, {"Steiner point " + std::to_string(n) + " (", "is not a rounded point between two neighbouring points on a facet's boundary edge, nor between two points of one facet"});
   }
   {
     io::VolumeMesh m = mesh;
@@ -372,7 +374,7 @@ TEST(CliCheck, CoplanarCheckRejectsTamperedMeshes) {
     io::VolumeMesh m = mesh;
     double x[3];
     const auto [a, b] = it->first;
-    segment_split_point(&m.points[3 * a], true, &m.points[3 * b], true, x);
+    point_on_segment(&m.points[3 * a], &m.points[3 * b], 0.5, x);
     m.points.insert(m.points.end(), x, x + 3);
     const std::string s = std::to_string(mesh.num_points());
     if (ridge)
@@ -393,11 +395,13 @@ TEST(CliCheck, TrianglesMeshCheckedAsCoplanarDiffersInFaceIdsOnly) {
   TempDir dir;
   const auto input = shared_data() / "glb/cubevc.glb";
   const auto tagged = dir.path() / "cubevc.mesh";
-  io::VolumeMesh mesh = make_mesh(input, tagged, dir);
+  io::VolumeMesh mesh = make_mesh(input, tagged, dir, "--facets triangles");
   ASSERT_GT(mesh.num_points(), 26u) << "Steiner points on edges inside the cube's faces";
   const CliRun r = check(input, tagged, dir, "--facets coplanar");
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("but lies on the coplanar facet of input triangles")) << r.out;
+  EXPECT_TRUE(r.says("is the CDT of the input triangles, each a facet of its own")) << r.out;
+  EXPECT_TRUE(r.says("check it with --facets triangles")) << r.out;
   EXPECT_FALSE(r.says(": Steiner point")) << r.out;
   EXPECT_FALSE(r.says("edge (")) << r.out;
 

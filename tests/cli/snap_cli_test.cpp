@@ -24,7 +24,11 @@ TEST(CliSnap, GearwheelHasNoCdtAsGivenAndTheMessageSaysWhatToTry) {
   const CliRun r = run(quoted(shared_data() / kGearwheel) + " -o " + quoted(dir.path() / "g.mesh"), dir);
   EXPECT_EQ(r.exit_code, 4) << r.out;
   EXPECT_TRUE(r.says("hint: moving 242 vertices by up to 5.4e-17")) << r.out;
-  EXPECT_TRUE(r.says("--snap 1e-12 --facets coplanar")) << r.out;
+  EXPECT_TRUE(r.says("`--snap 1e-12` makes faces that are flat by design exactly flat")) << r.out;
+  // With --facets triangles, the hint names coplanar facets too.
+  const CliRun triangles = run(quoted(shared_data() / kGearwheel) + " --facets triangles -o " + quoted(dir.path() / "g.mesh"), dir);
+  EXPECT_EQ(triangles.exit_code, 4) << triangles.out;
+  EXPECT_TRUE(triangles.says("`--snap 1e-12 --facets coplanar` makes faces")) << triangles.out;
   // Schönhardt's prism has rounding noise too (6.7e-16 for 0), but snapping it flattens nothing: no hint.
   const CliRun prism = run("--steiner none " + quoted(write_schonhardt(dir)) + " -o " + quoted(dir.path() / "p.mesh"), dir);
   EXPECT_EQ(prism.exit_code, 4) << prism.out;

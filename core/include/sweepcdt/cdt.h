@@ -108,6 +108,20 @@ struct Options {
   std::function<bool(const Progress&)> progress;
 };
 
+// The defaults of the surface converter — `sweepcdt mesh`, the Python module's tetrahedralize(),
+// the FreeCAD and MeshLab plugins — where Options{} keeps the PLC exactly as given: Steiner points
+// where the surface has no CDT as given, and exactly coplanar neighbouring triangles merged into one
+// facet. Coplanar facets are the default because CAD tessellations fan long thin triangles across
+// flat faces: kept as facets of their own, each of their edges must be made Delaunay, which takes
+// orders of magnitude more Steiner points (issue 13; README, Steiner points). Faces flat only up to
+// rounding stay as they are (never snapped unless asked: --snap) and get Steiner points instead.
+inline Options mesh_defaults() {
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  options.facets = FacetMode::Coplanar;
+  return options;
+}
+
 // The PLC has no CDT (paper §2: a face that cannot be finished, or a simplex that is not
 // constrained Delaunay). `witness` holds the vertex ids of the face or simplex concerned.
 class NoCdtError : public Error {

@@ -19,8 +19,11 @@ constexpr uint32_t kAuxiliaryId = kNone - 1;
 
 class Flipper {
  public:
-  explicit Flipper(FacetTriangles f)
-      : f_(f), drop_(f.triangles.size(), -1), sides_(interior_edge_sides(f.triangles, f.segments, &pending_)) {}
+  // Without `delaunay_edge`: flips to each facet's CDT (in-circle); with it: flips folds to Delaunay
+  // edges (flip_folds_to_delaunay).
+  explicit Flipper(FacetTriangles f, const std::function<bool(uint32_t, uint32_t)>* delaunay_edge = nullptr)
+      : f_(f), delaunay_edge_(delaunay_edge), drop_(f.triangles.size(), -1),
+        sides_(interior_edge_sides(f.triangles, f.segments, &pending_)) {}
 
   uint64_t run() {
     // Lawson's flips end for exactly coplanar facets; the cap guards facets coplanar only to within
@@ -98,6 +101,13 @@ class Flipper {
     if (cda == Sign::Zero || cdb == Sign::Zero || cda == cdb || abc == Sign::Zero || abd == Sign::Zero || abc == abd)
       return false;
 
+    if (delaunay_edge_) {
+      // A fold (not exactly flat) that is not Delaunay, whose other diagonal is.
+      if (predicates::orient<3>({p(a), p(b), p(c), p(d)}) == Sign::Zero) return false;
+      if ((*delaunay_edge_)(a, b) || !(*delaunay_edge_)(c, d)) return false;
+      return flip(key, t1, t2, a, b, c, d);
+    }
+
     // d inside the (perturbed) circumcircle of a, b, c?
     const Triangle abc_t{a, b, c};
     double e[3];
@@ -105,10 +115,13 @@ class Flipper {
     if (predicates::orient<3>({p(a), p(b), p(c), e}) == Sign::Zero) return false;
     if (!predicates::inside_circumsphere<3>({{{p(a), a}, {p(b), b}, {p(c), c}, {e, kAuxiliaryId}}}, {p(d), d}))
       return false;
+    return flip(key, t1, t2, a, b, c, d);
+  }
 
-    // Flip ab to cd: (c, a, d) and (d, b, c) keep the facet's orientation.
-    s = {c, a, d};
-    u = {d, b, c};
+  // Flips ab to cd: (c, a, d) and (d, b, c) keep the facet's orientation.
+  bool flip(uint64_t key, uint32_t t1, uint32_t t2, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    f_.triangles[t1] = {c, a, d};
+    f_.triangles[t2] = {d, b, c};
     sides_.erase(key);
     sides_[edge_key(c, d)] = {t1, t2};
     moved(edge_key(a, d), t2, t1);
@@ -127,6 +140,7 @@ class Flipper {
   }
 
   FacetTriangles f_;
+  const std::function<bool(uint32_t, uint32_t)>* delaunay_edge_;
   std::vector<int> drop_;          // per triangle (its facet's projection; triangles of one facet agree)
   std::vector<uint64_t> pending_;  // declared before sides_, which fills it
   EdgeSides sides_;                // non-segment edge -> its two triangles
@@ -135,5 +149,9 @@ class Flipper {
 }  // namespace
 
 uint64_t flip_facets_to_cdt(FacetTriangles facets) { return Flipper(facets).run(); }
+
+uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::function<bool(uint32_t, uint32_t)>& delaunay_edge) {
+  return Flipper(facets, &delaunay_edge).run();
+}
 
 }  // namespace sweepcdt::detail

@@ -11,6 +11,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <unordered_set>
 #include <vector>
 
@@ -28,5 +29,13 @@ struct FacetTriangles {
 
 // Flips every facet to its CDT; returns the number of flips.
 uint64_t flip_facets_to_cdt(FacetTriangles facets);
+
+// Folds (refine.h): two triangles of one facet that are not exactly coplanar, because a rounded
+// Steiner point lies a few ulps off its segment, meet at a ridge of the refined PLC, which the CDT
+// theorem needs Delaunay. Any triangulation of a facet will do, so a fold that is not an edge of the
+// Delaunay triangulation is flipped to the other diagonal of its (strictly convex) quadrilateral
+// when that one is: each flip trades a non-Delaunay edge for a Delaunay one, so the flips end.
+// Returns the number of flips; `delaunay_edge(a, b)` says whether ab is a Delaunay edge.
+uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::function<bool(uint32_t, uint32_t)>& delaunay_edge);
 
 }  // namespace sweepcdt::detail

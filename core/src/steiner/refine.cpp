@@ -1,6 +1,7 @@
 #include "refine.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <unordered_map>
@@ -20,7 +21,7 @@ using Triangle = std::array<uint32_t, 3>;
 // Limits that keep a hostile input from running away (the concentric-shell rule terminates, but the
 // number of points it needs grows with the ratio of the longest segment to the smallest gap).
 constexpr uint64_t kMaxRounds = 200;
-std::size_t steiner_budget(std::size_t input_points) { return 20 * input_points + 10000; }
+std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points + 100000; }
 
 class Refiner {
  public:
@@ -33,6 +34,7 @@ class Refiner {
     on_segment_.assign(input.num_points(), {kNone, kNone});
     tris_ = groups_.triangles;
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
+    for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
   }
 
   RefinedPlc run() {
@@ -63,6 +65,8 @@ class Refiner {
         // The segments are Delaunay: give each facet its 2D CDT, then make the folds that rounding
         // left in it segments when they are not Delaunay either (see fold_edges_not_in).
         flip_facets();
+        r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
+                                           [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
         split = fold_edges_not_in(delaunay);
       }
       if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
@@ -70,9 +74,10 @@ class Refiner {
       if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
         throw NoCdtError("Steiner points: " + std::to_string(split.size()) + " segments still not Delaunay after " +
                              std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +
-                             " Steiner points, over the limit for this input (20 per input point + 10000); long thin "
-                             "triangles on faces that are flat only approximately need that many (faces that are exactly "
-                             "flat can be merged: --facets coplanar)",
+                             " Steiner points, over the limit for this input (100 per input point + 100000); long thin "
+                             "triangles on faces that are flat only approximately need that many" +
+                             (options_.facets == FacetMode::Coplanar ? std::string()
+                                                                     : " (faces that are exactly flat can be merged: --facets coplanar)"),
                          {static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
@@ -118,6 +123,15 @@ class Refiner {
     return folds;
   }
 
+  struct CoordinatesHash {
+    std::size_t operator()(const std::array<uint64_t, 3>& x) const {
+      return std::hash<uint64_t>()(x[0] * 0x9E3779B97F4A7C15ull ^ (x[1] + 0x632BE59BD9B4E019ull) * 31 ^ x[2]);
+    }
+  };
+  static std::array<uint64_t, 3> key_of(const double* x) {
+    return {std::bit_cast<uint64_t>(x[0]), std::bit_cast<uint64_t>(x[1]), std::bit_cast<uint64_t>(x[2])};
+  }
+
   void flip_facets() { r_.flips += flip_facets_to_cdt({points_, tris_, groups_.segments, on_segment_}); }
 
   // The concentric-shell rule (refine.h): returns the new point's id.
@@ -125,8 +139,14 @@ class Refiner {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
     double x[3];
     segment_split_point(p(a), is_input(a), p(b), is_input(b), x);  // a < b: edge_key sorts
-    if (std::equal(x, x + 3, p(a)) || std::equal(x, x + 3, p(b)))
+    // Two segments that pass within rounding of each other can get the same rounded point (a smooth
+    // 120k-triangle scan did, and the Delaunay triangulation then refused the duplicate): another
+    // point of the segment instead (`sweepcdt check` recognises any: sweepcdt/steiner_point.h).
+    for (const double t : {0.5, 0.25, 0.75})
+      if (coordinates_.count(key_of(x))) point_on_segment(p(a), p(b), t, x);
+    if (coordinates_.count(key_of(x)))
       throw NoCdtError("Steiner points: a segment is too short to split in double precision", {a, b});
+    coordinates_.insert(key_of(x));
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
     const bool fold = fold_segments_.count(key) > 0;
@@ -184,6 +204,7 @@ class Refiner {
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
+  std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
 };
 
 }  // namespace

@@ -1,0 +1,59 @@
+#include "sweepcdt/steiner_point.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace sweepcdt {
+namespace {
+
+// Doubles in [0, 1] by their bit patterns, which order them.
+double from_bits(uint64_t u) {
+  double t;
+  std::memcpy(&t, &u, sizeof t);
+  return t;
+}
+constexpr uint64_t kOne = 0x3FF0000000000000ull;  // the bit pattern of 1.0
+
+struct Range {
+  uint64_t first = 1, last = 0;  // bit patterns of t, inclusive; empty when first > last
+};
+
+// The t in `within` for which coordinate a + t * d, rounded as point_on_segment() rounds it, equals x.
+// The rounded value is monotone in t (non-decreasing for d > 0, non-increasing for d < 0), so the
+// answer is one interval, found by two binary searches.
+Range preimage(double a, double d, double x, Range within) {
+  const auto value = [&](uint64_t u) { return a + from_bits(u) * d; };
+  if (d == 0) return value(within.first) == x ? within : Range{};
+  // "At or beyond x" in the direction the coordinate moves as t grows.
+  const auto reached = [&](uint64_t u) { return d > 0 ? value(u) >= x : value(u) <= x; };
+  const auto passed = [&](uint64_t u) { return d > 0 ? value(u) > x : value(u) < x; };
+  // The first u with reached(u), and the first with passed(u); both predicates are monotone in u.
+  const auto first_where = [&](auto&& predicate) {
+    uint64_t lo = within.first, hi = within.last + 1;  // answer in [lo, hi]; hi = none
+    while (lo < hi) {
+      const uint64_t mid = lo + (hi - lo) / 2;
+      if (predicate(mid)) hi = mid;
+      else lo = mid + 1;
+    }
+    return lo;
+  };
+  const uint64_t first = first_where(reached), end = first_where(passed);
+  if (first >= end) return {};
+  return {first, end - 1};
+}
+
+bool from_a_to_b(const double* a, const double* b, const double* x) {
+  Range t{1, kOne - 1};  // t in (0, 1): the smallest positive double up to the largest below 1
+  for (int k = 0; k < 3 && t.first <= t.last; ++k) t = preimage(a[k], b[k] - a[k], x[k], t);
+  return t.first <= t.last;
+}
+
+}  // namespace
+
+bool is_point_on_segment(const double* a, const double* b, const double* x) {
+  const auto same = [](const double* p, const double* q) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; };
+  if (same(x, a) || same(x, b)) return false;  // t near 0 or 1 rounds to an end: that splits nothing
+  return from_a_to_b(a, b, x) || from_a_to_b(b, a, x);
+}
+
+}  // namespace sweepcdt

@@ -1,0 +1,82 @@
+// sweepcdt/steiner_point.h: is_point_on_segment() recognises exactly the points a + t (b - a) that
+// refine can make, for any t — checked against a brute-force scan of the doubles t near the answer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "sweepcdt/steiner_point.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+// Brute force: some t within `window` doubles of t0 (in (0, 1)) gives x from a, or from b.
+bool scan_near(const double* a, const double* b, const double* x, double t0, int window) {
+  for (const bool reversed : {false, true}) {
+    const double* from = reversed ? b : a;
+    const double* to = reversed ? a : b;
+    double t = reversed ? 1 - t0 : t0;
+    for (int k = 0; k < window; ++k) t = std::nextafter(t, 0.0);
+    for (int k = 0; k < 2 * window; ++k, t = std::nextafter(t, 1.0)) {
+      if (!(t > 0 && t < 1)) continue;
+      double y[3];
+      point_on_segment(from, to, t, y);
+      if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]) return true;
+    }
+  }
+  return false;
+}
+
+TEST(SteinerPoint, RecognisesEveryConstructionAndNothingOffTheSegment) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coord(-100, 100), param(0.01, 0.99);
+  int accepted_nudged = 0, rejected_nudged = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    double a[3], b[3], x[3];
+    for (int k = 0; k < 3; ++k) a[k] = coord(rng), b[k] = coord(rng);
+    if (trial % 5 == 0) b[trial % 3] = a[trial % 3];  // a coordinate that does not change along ab
+    const double t = param(rng);
+    point_on_segment(a, b, t, x);
+    ASSERT_TRUE(is_point_on_segment(a, b, x)) << trial;
+    ASSERT_TRUE(is_point_on_segment(b, a, x)) << trial;  // either end first
+    // One coordinate nudged by a few ulps: sometimes still the rounding of another t, sometimes not;
+    // the recogniser must agree with the brute-force scan either way.
+    const int k = trial % 3;
+    x[k] = std::nextafter(x[k], trial % 2 ? INFINITY : -INFINITY);
+    if (trial % 4 == 0) x[k] = std::nextafter(x[k], trial % 2 ? INFINITY : -INFINITY);
+    const bool expected = scan_near(a, b, x, t, 1 << 12);
+    ASSERT_EQ(is_point_on_segment(a, b, x), expected) << trial;
+    (expected ? accepted_nudged : rejected_nudged)++;
+  }
+  // Both kinds occur, so the comparison above tested something each way.
+  EXPECT_GT(accepted_nudged, 50);
+  EXPECT_GT(rejected_nudged, 50);
+}
+
+TEST(SteinerPoint, EndsAndPointsBeyondThemAreNotSplitPoints) {
+  const double a[3] = {0, 0, 0}, b[3] = {1, 2, 3};
+  const double beyond[3] = {2, 4, 6}, before[3] = {-0.5, -1, -1.5}, off[3] = {0.5, 1, 1.5000001};
+  EXPECT_FALSE(is_point_on_segment(a, b, a));
+  EXPECT_FALSE(is_point_on_segment(a, b, b));
+  EXPECT_FALSE(is_point_on_segment(a, b, beyond));
+  EXPECT_FALSE(is_point_on_segment(a, b, before));
+  EXPECT_FALSE(is_point_on_segment(a, b, off));
+  const double mid[3] = {0.5, 1, 1.5};
+  EXPECT_TRUE(is_point_on_segment(a, b, mid));
+}
+
+// The constructions of earlier versions are special cases, so their meshes still verify: the
+// midpoint a + (b - a) / 2, and a point at a power-of-two distance from an input vertex v.
+TEST(SteinerPoint, OlderConstructionsAreRecognised) {
+  const double v[3] = {0.1, -3.7, 12.25}, w[3] = {7.3, 2.9, -1.0 / 3};
+  double mid[3], shell[3];
+  for (int k = 0; k < 3; ++k) mid[k] = v[k] + (w[k] - v[k]) / 2;
+  const double length = std::sqrt((w[0] - v[0]) * (w[0] - v[0]) + (w[1] - v[1]) * (w[1] - v[1]) + (w[2] - v[2]) * (w[2] - v[2]));
+  const double t = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
+  for (int k = 0; k < 3; ++k) shell[k] = v[k] + t * (w[k] - v[k]);
+  EXPECT_TRUE(is_point_on_segment(v, w, mid));
+  EXPECT_TRUE(is_point_on_segment(v, w, shell));
+}
+
+}  // namespace
