@@ -1,6 +1,7 @@
 #include "any_dimension.h"
 
 #include <chrono>
+#include <utility>
 
 #include "arrays.h"
 #include "errors.h"
@@ -60,7 +61,13 @@ py::dict run(std::vector<double> points, const std::vector<int64_t>& simplices, 
   py::dict r;
   r["dimension"] = D;
   r["points"] = to_numpy<double>(tri.points, D);
-  r["simplices"] = to_numpy<int64_t>(tri.simplices, D + 1);
+  // core's orient (Shewchuk's) is sign det[p_0 - p_D; ...; p_{D-1} - p_D], which is (-1)^D times the
+  // usual det[p_1 - p_0; ...; p_D - p_0]: for odd D, swap the last two vertices so that every
+  // simplex has positive volume in the usual sense (as tetrahedralize() and the file formats do).
+  std::vector<uint32_t> oriented = tri.simplices;
+  if (D % 2 == 1)
+    for (std::size_t t = 0; t + D < oriented.size(); t += D + 1) std::swap(oriented[t + D - 1], oriented[t + D]);
+  r["simplices"] = to_numpy<int64_t>(oriented, D + 1);
   r["regions"] = to_numpy<int32_t>(tri.regions, 0);
   r["num_input_points"] = tri.num_input_points;
   std::vector<int64_t> on(tri.steiner_on.size());

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <set>
+#include <utility>
 
 #include "arrays.h"
 #include "errors.h"
@@ -60,7 +61,11 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   const io::VolumeMesh& m = run.mesh;
   py::dict r;
   r["points"] = to_numpy<double>(m.points, 3);
-  r["tetrahedra"] = to_numpy<int64_t>(m.tetrahedra, 4);
+  // Like every file format (io/src/volume_mesh_formats.h): (a, b, d, c), so that det[b-a, c-a, d-a] > 0
+  // (VTK, meshio, Gmsh order) rather than sweepcdt's orient3d convention, its negative.
+  std::vector<uint32_t> tets = m.tetrahedra;
+  for (std::size_t t = 0; t + 3 < tets.size(); t += 4) std::swap(tets[t + 2], tets[t + 3]);
+  r["tetrahedra"] = to_numpy<int64_t>(tets, 4);
   r["regions"] = to_numpy<int32_t>(m.regions, 0);
   r["triangles"] = to_numpy<int64_t>(m.boundary, 3);
   r["triangle_ids"] = to_numpy<int64_t>(m.boundary_tags, 0);

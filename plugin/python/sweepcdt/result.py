@@ -8,8 +8,9 @@ class TetMesh:
 
     Attributes (numpy arrays):
 
-    * ``points`` (n, 3) float64: the welded input points first (``num_input_points`` of them; exactly
-      equal input points are merged, unused ones dropped, see ``point_ids``), then Steiner points.
+    * ``points`` (n, 3) float64: the welded input points first (``num_input_points`` of them, as the
+      converter numbers them: exactly equal points merged, in order of first use by the triangles,
+      unused ones dropped; ``point_ids`` maps input rows to these), then Steiner points.
     * ``tetrahedra`` (t, 4) int64: point ids, each tetrahedron positively oriented
       (VTK/Gmsh/TetGen/Medit order: ``det[b-a, c-a, d-a] > 0``).
     * ``regions`` (t,) int32: region id per tetrahedron (a connected part of the domain).
@@ -71,7 +72,7 @@ class Triangulation:
     """The CDT of a PLC of any dimension D = 2..5 (``sweepcdt.cdt``).
 
     * ``points`` (n, D) float64: the input points first (``num_input_points``), then Steiner points.
-    * ``simplices`` (s, D + 1) int64: positively oriented simplices.
+    * ``simplices`` (s, D + 1) int64: positively oriented simplices, det[p_1 - p_0, ..., p_D - p_0] > 0.
     * ``regions`` (s,) int32: region ids (empty for convex-hull domains).
     * ``steiner_simplices``: per Steiner point, the constraining simplex it lies on, or -1.
     * ``stats``: dict (algorithm, counts, seconds).
