@@ -99,6 +99,37 @@ class Block(unittest.TestCase):
         self.assertIn(mesh_obj, analysis.Group)
 
 
+class FileFormats(unittest.TestCase):
+    def test_export_and_import_round_trip(self):
+        import sweepcdt_fileformats
+        doc = FreeCAD.newDocument("SweepCDTFiles")
+        part = doc.addObject("Part::Feature", "Block")
+        part.Shape = block_with_holes_and_fillet()
+        doc.recompute()
+        mesh_obj, result, _ = sweepcdt_femmesh.tetrahedralize_object(part, deflection=DEFLECTION)
+        with tempfile.TemporaryDirectory() as d:
+            for ext in ("mesh", "msh", "node"):
+                path = os.path.join(d, f"block.{ext}")
+                sweepcdt_fileformats.export([mesh_obj], path)
+                back = sweepcdt.read_volume_mesh(path)  # the exported file holds the module's mesh
+                np.testing.assert_array_equal(back.points, result.points)
+                np.testing.assert_array_equal(back.tetrahedra, result.tetrahedra)
+                np.testing.assert_array_equal(back.regions, result.regions)
+                imported = sweepcdt_fileformats.insert(path, doc.Name)
+                self.assertEqual(imported.FemMesh.VolumeCount, len(result.tetrahedra))
+                self.assertEqual(imported.FemMesh.NodeCount, len(result.points))
+                inp = os.path.join(d, "back.inp")
+                imported.FemMesh.write(inp)
+                nodes, elements = inp_tetrahedra(inp)
+                p = np.array([[nodes[i] for i in e] for e in elements])
+                vol = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+                self.assertTrue((vol > 0).all(), ext)
+            # File > Open goes through FreeCAD's registry to this module.
+            self.assertIn("sweepcdt_fileformats", FreeCAD.getImportType("ele"))
+            opened = sweepcdt_fileformats.open(os.path.join(d, "block.mesh"))
+            self.assertEqual(len([o for o in opened.Objects if o.TypeId == "Fem::FemMeshObject"]), 1)
+
+
 class OpenMesh(unittest.TestCase):
     def test_non_closed_mesh_feature_gives_the_error(self):
         doc = FreeCAD.newDocument("SweepCDTOpen")
@@ -126,4 +157,4 @@ class OpenMesh(unittest.TestCase):
 
 
 if __name__ in ("__main__", "headless_test"):
-    run([Workbench, Block, OpenMesh])
+    run([Workbench, Block, FileFormats, OpenMesh])

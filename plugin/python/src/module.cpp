@@ -14,6 +14,7 @@
 #include "options.h"
 #include "running.h"
 #include "surface_run.h"
+#include "volume_files.h"
 #include "sweepcdt/io/error.h"
 #include "sweepcdt/io/read.h"
 #include "sweepcdt/io/surface_arrays.h"
@@ -124,5 +125,8 @@ PYBIND11_MODULE(_sweepcdt, m) {
         py::arg("steiner"), py::arg("facets"), py::arg("snap"), py::arg("check"), py::arg("progress"));
   m.def("cdt", &cdt_any_dimension, py::arg("points"), py::arg("simplices"), py::arg("exterior"), py::arg("tags"),
         py::arg("algorithm"), py::arg("steiner"), py::arg("check"), py::arg("progress"));
+  m.def("read_volume_mesh", &read_volume_mesh, py::arg("path"));
+  m.def("write_volume_mesh", &write_volume_mesh, py::arg("path"), py::arg("points"), py::arg("tetrahedra"),
+        py::arg("regions"), py::arg("triangles"), py::arg("triangle_ids"), py::arg("format"));
   m.def("defaults", &defaults, "The converter's defaults: {'algorithm': ..., 'steiner': ..., 'facets': ...}");
 }

@@ -21,12 +21,14 @@ from ._sweepcdt import cdt as _cdt
 from ._sweepcdt import defaults as _defaults
 from ._sweepcdt import mesh_file as _mesh_file
 from ._sweepcdt import read_surface as _read_surface
+from ._sweepcdt import read_volume_mesh as _read_volume_mesh
 from ._sweepcdt import tetrahedralize as _tetrahedralize
+from ._sweepcdt import write_volume_mesh as _write_volume_mesh
 from .errors import CancelledError, CheckError, Error, InvalidInputError, NoCdtError, OutputError
 from .result import Surface, TetMesh, Triangulation
 
 __all__ = [
-    "tetrahedralize", "read_surface", "mesh_file", "cdt", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
+    "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
     "Error", "InvalidInputError", "NoCdtError", "OutputError", "CheckError", "CancelledError",
 ]
 
@@ -99,3 +101,21 @@ def cdt(points, simplices, *, exterior=None, tags=None, algorithm=DEFAULTS["algo
     steiner: "none" (default: the PLC as given) or "auto" (D = 3 only). Returns a Triangulation.
     """
     return Triangulation(_cdt(points, simplices, exterior, tags, algorithm, steiner, check, progress))
+
+
+def read_volume_mesh(path):
+    """Read a volume mesh in any format the converter writes (.mesh, .vtu, .msh, .node/.ele/.face,
+    .inp) as a TetMesh (its stats hold the counts only). Raises InvalidInputError naming the file."""
+    return TetMesh(_read_volume_mesh(os.fspath(path)))
+
+
+def write_volume_mesh(path, mesh=None, *, points=None, tetrahedra=None, regions=None, triangles=None,
+                      triangle_ids=None, format=None):
+    """Write a TetMesh (or the arrays: points (n, 3), tetrahedra (t, 4) with det[b-a, c-a, d-a] > 0,
+    optional regions (t,), boundary triangles (b, 3) and their triangle_ids (b,)) to a volume-mesh
+    file, format from the extension or ``format`` as in mesh_file(). Atomic; OutputError if the file
+    cannot be written."""
+    if mesh is not None:
+        points, tetrahedra, regions = mesh.points, mesh.tetrahedra, mesh.regions
+        triangles, triangle_ids = mesh.triangles, mesh.triangle_ids
+    _write_volume_mesh(os.fspath(path), points, tetrahedra, regions, triangles, triangle_ids, format)
