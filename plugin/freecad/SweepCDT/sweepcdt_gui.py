@@ -68,9 +68,21 @@ class TetrahedralizePanel:
 
     def run(self):
         """Meshes with the panel's options; True on success. Errors are reported, never raised."""
+        # FreeCAD's progress bar in the status bar; Esc aborts it (next() raises), and returning
+        # False cancels the computation cleanly (sweepcdt.CancelledError, reported as a failure).
+        indicator = FreeCAD.Base.ProgressIndicator()
+        indicator.start(f"Tetrahedralizing {self.obj.Label}...", 0)
+
+        def progress(phase, done, total):
+            try:
+                indicator.next(True)
+            except Exception:
+                return False
+            return True
+
         try:
             self.mesh_obj, result, seconds = sweepcdt_femmesh.tetrahedralize_object(
-                self.obj, analysis=active_analysis(), **self.options())
+                self.obj, analysis=active_analysis(), progress=progress, **self.options())
         except sweepcdt_femmesh.SweepCDTError as e:
             FreeCAD.Console.PrintError(f"SweepCDT: {e}\n")
             self.message = f"Failed: {e}"
@@ -81,6 +93,8 @@ class TetrahedralizePanel:
             self.message = f"Internal error: {e!r}"
             self.result.setText(self.message)
             return False
+        finally:
+            indicator.stop()
         text = sweepcdt_femmesh.summary(result, seconds)
         FreeCAD.Console.PrintMessage(f"SweepCDT: {self.obj.Label} -> {self.mesh_obj.Label}: {text}\n")
         self.message = text
