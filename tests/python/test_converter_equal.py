@@ -42,10 +42,21 @@ def test_arrays_equal_the_converters_file(relative, options, shared_data, conver
     np.testing.assert_array_equal(mesh.tetrahedra, file.cells_dict["tetra"])
     np.testing.assert_array_equal(mesh.triangles, file.cells_dict["triangle"])
     blocks = [c.type for c in file.cells]
-    data = dict(zip(blocks, zip(*file.cell_data.values()))) if False else None  # (meshio keeps order per block)
     tet_block, tri_block = blocks.index("tetra"), blocks.index("triangle")
     np.testing.assert_array_equal(mesh.regions + 1, file.cell_data["region"][tet_block])
     np.testing.assert_array_equal(mesh.triangle_ids + 1, file.cell_data["boundary_tag"][tri_block])
+    # Steiner provenance: the file's input_triangle is the triangle + 1 for Steiner points, else 0.
+    n = mesh.num_input_points
+    np.testing.assert_array_equal(file.point_data["steiner"][n:], 1)
+    np.testing.assert_array_equal(mesh.steiner_triangles + 1, file.point_data["input_triangle"][n:])
+    on = mesh.steiner_triangles >= 0
+    if on.any():  # each lies on its input triangle: in its plane up to rounding (checked with numpy)
+        corners = points[triangles[mesh.steiner_triangles[on]]]
+        normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        normal /= np.linalg.norm(normal, axis=1)[:, None]
+        distance = np.abs(np.einsum("ij,ij->i", mesh.steiner_points[on] - corners[:, 0], normal))
+        size = np.abs(points).max()
+        assert distance.max() <= 1e-12 * size, distance.max()
     assert (signed_volumes(mesh.points, mesh.tetrahedra) > 0).all()
     assert mesh.stats["tetrahedra"] == len(file.cells_dict["tetra"])
 
