@@ -46,9 +46,10 @@ def test_no_cdt_carries_the_witness():
     assert mesh.stats["steiner_points"] > 0
 
 
-def test_invalid_surfaces_name_their_problems(shared_data):
+def test_invalid_surfaces_name_their_problems(shared_data, tmp_path):
     with pytest.raises(sweepcdt.InvalidInputError) as e:
-        sweepcdt.mesh_file(shared_file(shared_data, "bad/open_cube.off"), "/tmp/never_written.mesh")
+        sweepcdt.mesh_file(shared_file(shared_data, "bad/open_cube.off"), tmp_path / "never_written.mesh")
+    assert not (tmp_path / "never_written.mesh").exists()
     assert e.value.exit_code == 3 and "open_cube.off" in str(e.value)
     assert e.value.problems and e.value.problems[0][0] == "boundary-edge"
     with pytest.raises(sweepcdt.InvalidInputError, match="intersect"):
