@@ -92,6 +92,49 @@ class CalculiX(unittest.TestCase):
         print(f"\nCalculiX: {mesh_obj.FemMesh.VolumeCount} C3D4, largest displacement {largest:.4g} mm, "
               f"tip z mean {disp[x == 40][:, 2].mean():.4g} mm")
 
+    def test_pressure_on_a_face_reaches_the_elements(self):
+        # A pressure load needs the mesh's element faces on the CAD face (FreeCAD finds them
+        # geometrically, as for its Gmsh meshes): it must appear as *DLOAD and push the end inward.
+        doc = FreeCAD.newDocument("SweepCDTCcxPressure")
+        part = doc.addObject("Part::Feature", "Block")
+        part.Shape = block_with_holes_and_fillet()
+        doc.recompute()
+        analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
+        solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiXccxTools")
+        solver.AnalysisType = "static"
+        analysis.addObject(solver)
+        material = ObjectsFem.makeMaterialSolid(doc, "Steel")
+        mat = material.Material
+        mat["Name"], mat["YoungsModulus"], mat["PoissonRatio"] = "CalculiX-Steel", "210000 MPa", "0.30"
+        material.Material = mat
+        analysis.addObject(material)
+        fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
+        fixed.References = [(part, face_at_x(part.Shape, 0))]
+        analysis.addObject(fixed)
+        pressure = ObjectsFem.makeConstraintPressure(doc, "Pressure")
+        pressure.References = [(part, face_at_x(part.Shape, 40))]
+        pressure.Pressure = 10.0  # MPa, onto the face
+        analysis.addObject(pressure)
+        doc.recompute()
+        mesh_obj, _, _ = sweepcdt_femmesh.tetrahedralize_object(part, analysis=analysis, deflection=0.1)
+        fea = ccxtools.FemToolsCcx(analysis, solver)
+        fea.update_objects()
+        workdir = tempfile.TemporaryDirectory(prefix="sweepcdt_ccx_")
+        self.addCleanup(workdir.cleanup)
+        fea.setup_working_dir(workdir.name)
+        self.assertEqual(fea.check_prerequisites(), "")
+        fea.write_inp_file()
+        with open(fea.inp_file_name) as f:
+            self.assertIn("*DLOAD", f.read())
+        fea.setup_ccx()
+        self.assertEqual(fea.ccx_run(), 0)
+        fea.load_results()
+        result = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")][0]
+        disp = np.array([(v.x, v.y, v.z) for v in result.DisplacementVectors])
+        x = np.array([mesh_obj.FemMesh.Nodes[i].x for i in result.NodeNumbers])
+        self.assertTrue(np.isfinite(disp).all())
+        self.assertLess(disp[x == 40][:, 0].mean(), 0)  # compressed along -x
+
 
 if __name__ in ("__main__", "calculix_test"):
     run([CalculiX])
