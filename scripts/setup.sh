@@ -15,6 +15,8 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev   # io: glTF 2.0 (tinygltf is compiled in io/src/tinygltf_impl.cpp)
   clang-14 libclang-rt-14-dev   # tests/fuzz: libFuzzer targets (cmake -DSWEEPCDT_FUZZ=ON with clang)
   python3-meshio gmsh calculix-ccx   # tests/io: independent readers of the volume meshes written (and tetgen above)
+  python3-dev python3-numpy pybind11-dev python3-pytest   # plugin/python: the module for Debian's /usr/bin/python3, its tests
+  freecad-python3 xvfb xauth   # plugin/freecad: FreeCAD 0.20 (FEM, CalculiX via calculix-ccx above); GUI test under Xvfb
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #include "sweepcdt/io/to_plc.h"
 
 #include "sweepcdt/io/read.h"
+#include "sweepcdt/io/surface_arrays.h"
 
 namespace sweepcdt::io {
 
@@ -21,13 +22,7 @@ Plc<3> to_plc(const Surface& surface, const SurfaceReport& report) {
 }
 
 Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance, SnapReport* snapped) {
-  Surface surface = weld(read_soup(file));
-  if (snap_tolerance > 0) {
-    SnapReport report;
-    surface = snap_coordinates(surface, snap_tolerance, report);
-    if (snapped) *snapped = report;
-  }
-  return to_plc(surface, inspect(surface));
+  return plc_of_soup(read_soup(file), snap_tolerance, snapped);
 }
 
 }  // namespace sweepcdt::io

@@ -1,0 +1,48 @@
+#include "options.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "run_options.h"  // plugin/cli: the converter's defaults and --snap bound (header only)
+
+namespace sweepcdt::python {
+
+RunKeywords converter_defaults() {
+  const cli::RunOptions cli_defaults;
+  return {cli_defaults.algorithm, cli_defaults.steiner, cli_defaults.facets, cli_defaults.snap, cli_defaults.check};
+}
+
+const char* name_of(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
+const char* name_of(FacetMode mode) { return mode == FacetMode::Coplanar ? "coplanar" : "triangles"; }
+
+RunKeywords run_keywords(const std::optional<std::string>& algorithm, const std::optional<std::string>& steiner,
+                         const std::optional<std::string>& facets, std::optional<double> snap, bool check) {
+  RunKeywords k = converter_defaults();
+  if (algorithm) {
+    if (*algorithm == "sweep-sphere") k.algorithm = Algorithm::SweepSphere;
+    else if (*algorithm == "sweep-plane") k.algorithm = Algorithm::SweepPlane;
+    else if (*algorithm == "giftwrap" || *algorithm == "gift-wrap") k.algorithm = Algorithm::GiftWrap;
+    else throw std::invalid_argument("algorithm must be 'sweep-sphere', 'sweep-plane' or 'giftwrap', not '" + *algorithm + "'");
+  }
+  if (steiner) {
+    if (*steiner == "auto") k.steiner = SteinerMode::Auto;
+    else if (*steiner == "none") k.steiner = SteinerMode::None;
+    else throw std::invalid_argument("steiner must be 'auto' or 'none', not '" + *steiner + "'");
+  }
+  if (facets) {
+    if (*facets == "triangles") k.facets = FacetMode::Triangles;
+    else if (*facets == "coplanar") k.facets = FacetMode::Coplanar;
+    else throw std::invalid_argument("facets must be 'triangles' or 'coplanar', not '" + *facets + "'");
+  }
+  if (snap) {
+    // The converter's bound: snapping repairs rounding noise, not modelling error.
+    if (!(*snap > 0 && *snap <= cli::kLargestSnap))
+      throw std::invalid_argument("snap must be a tolerance relative to the bounding-box diagonal, above 0 and at most " +
+                                  std::to_string(cli::kLargestSnap) + " (e.g. 1e-12), or None");
+    k.snap = *snap;
+  }
+  k.check = check;
+  return k;
+}
+
+}  // namespace sweepcdt::python
