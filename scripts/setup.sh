@@ -15,6 +15,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev   # io: glTF 2.0 (tinygltf is compiled in io/src/tinygltf_impl.cpp)
   clang-14 libclang-rt-14-dev   # tests/fuzz: libFuzzer targets (cmake -DSWEEPCDT_FUZZ=ON with clang)
   python3-meshio gmsh calculix-ccx   # tests/io: independent readers of the volume meshes written (and tetgen above)
+  meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev xvfb xauth python3 xz-utils   # plugin/meshlab, its tests (xvfb-run), the SDK fetch
 )
 
 missing=()
@@ -29,6 +30,9 @@ if ((${#missing[@]})); then
   $sudo_cmd apt-get update -qq
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+
+# MeshLab 2020.09 headers from Debian's source package, for plugin/meshlab (idempotent).
+scripts/fetch_meshlab_sdk.sh
 
 deps_only=0
 if [ "${1:-}" = "--deps-only" ]; then deps_only=1; shift; fi
