@@ -42,7 +42,8 @@ QString FilterSweepCdtPlugin::filterInfo(FilterIDType) const {
          "MeshLab shows surfaces only, so the filter adds a <b>cut-away layer</b>: the tetrahedra whose centroid lies "
          "below a plane across the chosen axis, drawn as the triangles that bound them. Faces on the cut show the "
          "interior elements, coloured by element quality (radius ratio 3r/R: red = poor, blue = good; also stored as "
-         "face quality) or by region (separate bodies); faces on the surface are grey. Move the plane to look inside.<br><br>"
+         "face quality) or by region (separate bodies); faces on the surface are grey. The surface layer is hidden so "
+         "that the cut can be seen (the eye in the layer list shows it again). Move the plane to look inside.<br><br>"
          "A layer that does not bound a volume (open, non-manifold, degenerate, duplicate or self-intersecting faces) "
          "is refused with a message naming the problems, and <b>the offending faces are selected</b> in the layer: "
          "repair them with Filters &rarr; Cleaning and Repairing and run the filter again.<br><br>"
@@ -82,7 +83,9 @@ void FilterSweepCdtPlugin::initParameterSet(QAction*, MeshModel& m, RichParamete
                           "0: exact input. Above 0 (at most 1e-3, relative to the bounding-box diagonal, e.g. 1e-12): round "
                           "coordinates closer than this to one value first (CAD rounding noise)."));
   par.addParam(RichBool("Verify", false, "Verify", "Validate the result once more, exactly, before writing it."));
-  par.addParam(RichEnum("CutAxis", 0, list_of(c.axes), "Cut-away axis", "The axis across which the display plane cuts."));
+  // z: MeshLab's initial view looks down the z axis, so the cut faces the user.
+  par.addParam(RichEnum("CutAxis", 2, list_of(c.axes), "Cut-away axis",
+                        "The axis across which the display plane cuts (z faces MeshLab's initial view)."));
   par.addParam(RichDynamicFloat("CutPosition", 0.5f, 0.0f, 1.0f, "Cut-away position",
                                 "Where the plane cuts, as a fraction of the mesh's extent along the axis (1 shows every tetrahedron)."));
   par.addParam(RichEnum("Colour", 0, list_of(c.colourings), "Colour the cut by",
@@ -142,7 +145,12 @@ bool FilterSweepCdtPlugin::tetrahedralize(MeshDocument& md, const RichParameterL
     return false;
   }
   for (const std::string& line : r.log) Log("%s", line.c_str());
-  MeshModel* layer = md.addNewMesh("", source->label() + " tetrahedra (cut-away)", false);
+  // The surface would hide the cut inside it: hide it (the eye in the layer list shows it again).
+  source->visible = false;
+  // MeshLab's layer list shows a label up to its last dot: "spot.stl" gives "spot tetrahedra (cut-away)".
+  QString base = QFileInfo(source->label()).completeBaseName();
+  base.replace('.', '_');
+  MeshModel* layer = md.addNewMesh("", base + " tetrahedra (cut-away)", false);
   sweepcdt::meshlab::fill_cut_away_layer(*layer, r,
                                           par.getEnum("Colour") == 1 ? sweepcdt::meshlab::Colouring::Region : sweepcdt::meshlab::Colouring::Quality);
   return true;
