@@ -5,7 +5,7 @@
 // MeshLab's own io plugin uses), fills the filter's parameters, applies it — and then prints what the
 // layer looks like: the result, the error message, the log and the selected face indices.
 //
-// Usage: filter_host PLUGIN.so INPUT.{off,stl} OUTPUT.mesh
+// Usage: filter_host PLUGIN.so INPUT.{off,stl} OUTPUT.mesh [ENUM_PARAMETER=INDEX ...]
 // Prints:  result ok|failed / error <message> / log <line>... / faces <n> / selected <i j k ...>
 #include <common/interfaces.h>
 #include <common/GLLogStream.h>
@@ -19,8 +19,8 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: filter_host PLUGIN.so INPUT.{off,stl} OUTPUT.mesh\n");
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: filter_host PLUGIN.so INPUT.{off,stl} OUTPUT.mesh [ENUM_PARAMETER=INDEX ...]\n");
     return 2;
   }
   QApplication app(argc, argv);
@@ -47,6 +47,14 @@ int main(int argc, char** argv) {
   RichParameterList parameters;
   filter->initParameterSet(action, md, parameters);
   parameters.setValue("OutputFile", FileValue(argv[3]));
+  for (int i = 4; i < argc; ++i) {  // e.g. Steiner=1 (none)
+    const QStringList nv = QString(argv[i]).split('=');
+    if (nv.size() != 2 || !parameters.hasParameter(nv[0])) {
+      std::fprintf(stderr, "bad parameter %s\n", argv[i]);
+      return 2;
+    }
+    parameters.setValue(nv[0], EnumValue(nv[1].toInt()));
+  }
   const bool ok = filter->applyFilter(action, md, parameters, nullptr);
 
   std::printf("result %s\n", ok ? "ok" : "failed");

@@ -88,7 +88,7 @@ def xvfb(tmp, command, log_name):
     return p.returncode, text
 
 
-def filter_script(path, output, cut_position=0.5, cut_axis=0):
+def filter_script(path, output, cut_position=0.5, cut_axis=0, steiner=0):
     """A filter script with every parameter: Debian's meshlabserver 2020.09 asserts (and aborts)
     when a script leaves one out (mainserver.cpp:614). Defaults as the filter's dialog shows them."""
     def enum(name, value, values):
@@ -100,7 +100,7 @@ def filter_script(path, output, cut_position=0.5, cut_axis=0):
                 '  <Param type="RichSaveFile" value="%s" ext=".mesh" name="OutputFile" description="" tooltip=""/>\n'
                 % output
                 + enum("Algorithm", 0, ["sweep-sphere", "sweep-plane", "giftwrap"])
-                + enum("Steiner", 0, ["auto", "none"])
+                + enum("Steiner", steiner, ["auto", "none"])
                 + enum("Facets", 0, ["triangles", "coplanar"])
                 + '  <Param type="RichString" value="0" name="Snap" description="" tooltip=""/>\n'
                 + '  <Param type="RichBool" value="false" name="Verify" description="" tooltip=""/>\n'
@@ -245,6 +245,12 @@ def convert_test(args, tmp):
     with open(os.path.join(tmp, "filter.log")) as f:
         log = f.read()
     check(status == 0, "meshlabserver failed (%d):\n%s\n%s" % (status, text, log))
+    # meshlabserver prints each new progress text of the filter's callback: the phases, in order.
+    phases = ["checking the surface", "writing", "cut-away layer", "done"]
+    at = -1
+    for phase in phases:
+        at = text.find(phase, at + 1)
+        check(at != -1, "progress phases %s not all reported in order:\n%s" % (phases, text))
     summary = [line for line in log.splitlines() if "tetrahedra," in line and "Steiner points" in line]
     check(summary, "the filter's log has no summary line:\n" + log)
     print(summary[0].strip())
@@ -288,13 +294,13 @@ def boundary_edge_faces(faces):
     return sorted({i for i, f in enumerate(faces) for k in range(len(f)) if len(uses[frozenset((f[k], f[(k + 1) % len(f)]))]) == 1})
 
 
-def host_selection(args, tmp, source):
+def host_selection(args, tmp, source, extra=()):
     if not os.path.exists(args.host):
         raise Failure(args.host + " not built")
     env = environment(tmp)
     env["QT_QPA_PLATFORM"] = "offscreen"  # filter_host opens no window and needs no GL
     volume = os.path.join(tmp, "host.mesh")
-    p = subprocess.run([args.host, args.plugin, source, volume], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    p = subprocess.run([args.host, args.plugin, source, volume] + list(extra), env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        timeout=HANG_GUARD)
     text = p.stdout.decode("utf-8", "replace")
     check(p.returncode == 0, "filter_host failed (%d):\n%s" % (p.returncode, text))
@@ -398,7 +404,8 @@ def bad_test(args, tmp):
     server = os.path.join(bin_dir, "meshlabserver")
     volume = os.path.join(tmp, "volume.mesh")
     script = os.path.join(tmp, "tetrahedralize.mlx")
-    filter_script(script, volume)
+    steiner = 1 if args.kind == "nocdt" else 0  # none: the surface as given
+    filter_script(script, volume, steiner=steiner)
     status, text = xvfb(tmp, [server, "-l", os.path.join(tmp, "filter.log"), "-i", source, "-s", script], "meshlabserver.log")
     with open(os.path.join(tmp, "filter.log")) as f:
         log = f.read()
@@ -406,13 +413,31 @@ def bad_test(args, tmp):
     # would end with a signal (status 128 + n from xvfb-run's shell).
     check(status == 255 and "Problem with filter: Tetrahedralize (constrained Delaunay)" in log,
           "meshlabserver did not fail cleanly (status %d):\n%s\n%s" % (status, text, log))
-    messages = [line for line in log.splitlines() if "does not bound a volume" in line]
+    messages = [line for line in log.splitlines() if "Tetrahedralize failed" in line]
     check(messages, "no error message in meshlabserver's log:\n" + log)
     print("meshlabserver: " + messages[0].strip())
     check(not os.path.exists(volume), "a volume file was written for bad input")
 
-    error, selected, faces, host_text = host_selection(args, tmp, source)
+    error, selected, faces, host_text = host_selection(args, tmp, source, ["Steiner=%d" % steiner])
     print("filter_host: %s; selected %s" % (error, selected))
+    if args.kind == "nocdt":
+        check("no CDT" in error and "witness vertices" in error, "unexpected error: " + error)
+        witness = [int(x) for x in error.split("witness vertices ")[1].split(")")[0].split()]
+        # The layer's exact floats (MeshLab's importer, then its PLY exporter), welded as surface.h
+        # documents: equal coordinates are one vertex, numbered in order of first use by the faces.
+        layer = os.path.join(tmp, "layer.ply")
+        status, text = xvfb(tmp, [server, "-i", source, "-o", layer], "layer.log")
+        check(status == 0, "meshlabserver could not save the layer (%d):\n%s" % (status, text))
+        vertices, layer_faces, _ = read_ply(layer)
+        check(len(layer_faces) == faces, "MeshLab's layer has %d faces, filter_host's %d" % (len(layer_faces), faces))
+        welded = {}
+        for f in layer_faces:
+            for v in f:
+                welded.setdefault(vertices[v], len(welded))
+        expected = [i for i, f in enumerate(layer_faces) if any(welded[vertices[v]] in witness for v in f)]
+        check(len(witness) == 4 and expected, "witness %s selects nothing here" % witness)
+        check(selected == expected, "selected faces %s, expected %s" % (selected, expected))
+        return
     check("does not bound a volume" in error and "faces selected" in error, "unexpected error: " + error)
     if args.kind == "open":
         expected = boundary_edge_faces(read_off_faces(source))
@@ -479,7 +504,7 @@ def main():
     ap.add_argument("--host")
     ap.add_argument("--input", required=True)
     ap.add_argument("--via-ply", action="store_true")
-    ap.add_argument("--kind", choices=["open", "selfintersecting"])
+    ap.add_argument("--kind", choices=["open", "selfintersecting", "nocdt"])
     ap.add_argument("--pairs", type=int, default=0)
     args = ap.parse_args()
     if not os.path.exists(args.plugin):
