@@ -1,6 +1,8 @@
 #include "job.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -137,6 +139,22 @@ JobResult run_job(const JobInput& in) {
     const double snap = parse_snap(in.snap);
 
     progress(0, "checking the surface");
+    // MeshLab layers can hold anything; the library's file readers refuse non-finite coordinates,
+    // and so does this (every later test assumes finite numbers).
+    std::vector<uint32_t> bad_points;
+    for (std::size_t i = 0; i < in.points.size(); ++i)
+      if (!std::isfinite(in.points[i]) && (bad_points.empty() || bad_points.back() != i / 3)) bad_points.push_back(static_cast<uint32_t>(i / 3));
+    if (!bad_points.empty()) {
+      for (uint32_t t = 0; t < in.triangles.size() / 3; ++t)
+        for (int k = 0; k < 3; ++k)
+          if (std::binary_search(bad_points.begin(), bad_points.end(), in.triangles[3 * t + k])) {
+            r.select.push_back(t);
+            break;
+          }
+      r.error = in.name + ": vertex " + std::to_string(bad_points[0]) + " has a non-finite coordinate (" +
+                std::to_string(bad_points.size()) + " such vertices); " + std::to_string(r.select.size()) + " faces selected";
+      return r;
+    }
     io::Soup soup;
     soup.file = in.name;
     soup.points = in.points;

@@ -76,7 +76,11 @@ def environment(tmp):
 
 def xvfb(tmp, command, log_name):
     """Runs `command` under xvfb-run; returns (exit status, stdout+stderr text)."""
-    full = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"] + command
+    # -a picks a free display from -n on; a start of our own keeps this away from other projects'
+    # xvfb-run -a, which all start at 99 (two may pick one number at once; ctest's RESOURCE_LOCK
+    # serialises ours).
+    start = 200 + os.getpid() % 5000
+    full = ["xvfb-run", "-a", "-n", str(start), "-s", "-screen 0 1280x1024x24"] + command
     try:
         p = subprocess.run(full, cwd=tmp, env=environment(tmp), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            timeout=HANG_GUARD)
