@@ -30,7 +30,7 @@ fi
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-chmod 755 "$work"   # apt downloads as user _apt when it can
+# (As root apt warns that it downloads "unsandboxed": _apt cannot write to this private folder. Harmless.)
 echo "fetch_meshlab_sdk: downloading Debian's meshlab=$version source package"
 (cd "$work" && apt-get source --download-only -qq "meshlab=$version" >/dev/null)
 orig="$(ls "$work"/meshlab_*.orig.tar.* | head -n 1)"
