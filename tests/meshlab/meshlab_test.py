@@ -400,8 +400,26 @@ def intersecting_pairs(vertices, faces):
     return pairs
 
 
+def two_cubes_off(path):
+    """Two unit cubes sharing the edge x = y = 1 (the shared data has no non-manifold file MeshLab
+    reads): that edge has four triangles."""
+    vertices, faces = [], []
+    for ox, oy in ((0, 0), (1, 1)):
+        base = len(vertices)
+        vertices += [(ox + (i & 1), oy + (i >> 1 & 1), i >> 2 & 1) for i in range(8)]
+        for q in ((0, 4, 6, 2), (1, 3, 7, 5), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1), (4, 5, 7, 6)):
+            faces += [(base + q[0], base + q[1], base + q[2]), (base + q[0], base + q[2], base + q[3])]
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(vertices), len(faces)))
+        f.writelines("%d %d %d\n" % v for v in vertices)
+        f.writelines("3 %d %d %d\n" % t for t in faces)
+
+
 def bad_test(args, tmp):
     source = args.input
+    if args.kind == "nonmanifold":
+        source = os.path.join(tmp, "two_cubes.off")
+        two_cubes_off(source)
     if not os.path.exists(source):
         raise Failure(source + ": shared mesh not found (../shared/data/bad)")
     bin_dir = meshlab_tree(tmp, args.plugin)
@@ -443,6 +461,20 @@ def bad_test(args, tmp):
         check(selected == expected, "selected faces %s, expected %s" % (selected, expected))
         return
     check("does not bound a volume" in error and "faces selected" in error, "unexpected error: " + error)
+    if args.kind == "nonmanifold":
+        faces_xyz = read_off_faces(source)
+        uses = {}
+        for i, f in enumerate(faces_xyz):
+            for k in range(3):
+                uses.setdefault(frozenset((f[k], f[(k + 1) % 3])), []).append(i)
+        edge = [e for e, fs in uses.items() if len(fs) > 2]
+        check(len(edge) == 1 and len(uses[edge[0]]) == 4, "the test's own two cubes: %s" % edge)
+        at_edge = sorted(uses[edge[0]])
+        at_ends = sorted(i for i, f in enumerate(faces_xyz) if any(p in edge[0] for p in f))
+        check("1 non-manifold edges" in error, "the message does not name the non-manifold edge: " + error)
+        # Every face at the edge, and (pinched ends, if reported) faces at its two vertices only.
+        check(set(at_edge) <= set(selected) <= set(at_ends), "selected %s: not between %s and %s" % (selected, at_edge, at_ends))
+        return
     if args.kind == "open":
         expected = boundary_edge_faces(read_off_faces(source))
         check(faces == len(read_off_faces(source)), "filter_host read %d faces" % faces)
@@ -506,9 +538,9 @@ def main():
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--cli", required=True)
     ap.add_argument("--host")
-    ap.add_argument("--input", required=True)
+    ap.add_argument("--input", default="")
     ap.add_argument("--via-ply", action="store_true")
-    ap.add_argument("--kind", choices=["open", "selfintersecting", "nocdt"])
+    ap.add_argument("--kind", choices=["open", "selfintersecting", "nocdt", "nonmanifold"])
     ap.add_argument("--pairs", type=int, default=0)
     args = ap.parse_args()
     if not os.path.exists(args.plugin):
