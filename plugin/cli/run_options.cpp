@@ -25,7 +25,7 @@ double parse_snap(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != text.size() || !(tolerance > 0 && tolerance <= kLargestSnap))
+  if (used == 0 || used != text.size() || !(tolerance > 0 && tolerance <= io::kLargestSnap))
     throw UsageError("--snap needs a tolerance relative to the bounding-box diagonal, above 0 and at most 1e-3 (e.g. "
                      "--snap 1e-12), not '" + text + "'");
   return tolerance;

@@ -6,6 +6,7 @@
 
 #include "args.h"
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/io/snap.h"
 
 namespace sweepcdt::cli {
 
@@ -25,8 +26,7 @@ const char* to_string(FacetMode mode);    // "triangles", "coplanar"
 // The core options of a run: what the user chose, plus where statistics and progress go.
 Options core_options(const RunOptions& options, CdtStatistics* statistics, std::function<bool(const Progress&)> progress);
 
-// --snap's bounds: it repairs rounding noise, not modelling error.
-inline constexpr double kLargestSnap = 1e-3;
+// --snap's bounds (io::kLargestSnap): it repairs rounding noise, not modelling error.
 double parse_snap(const std::string& text);
 
 // Consumes one of the shared options at the reader's position; false if it is none of them.

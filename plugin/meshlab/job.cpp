@@ -24,7 +24,6 @@ namespace sweepcdt::meshlab {
 namespace {
 
 constexpr std::size_t kDetailsShown = 10;
-constexpr double kLargestSnap = 1e-3;  // as `sweepcdt --snap`: it repairs rounding noise, not modelling error
 
 // A failure the job itself found (not a library exception): its message is the result's error.
 struct JobError : std::runtime_error {
@@ -45,7 +44,7 @@ double parse_snap(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != text.size() || !(tolerance >= 0 && tolerance <= kLargestSnap))
+  if (used == 0 || used != text.size() || !(tolerance >= 0 && tolerance <= io::kLargestSnap))
     throw JobError("snap tolerance must be 0 (no snapping) or a number above 0 and at most 1e-3 relative to the bounding-box diagonal "
                    "(e.g. 1e-12), not '" + text + "'");
   return tolerance;
@@ -113,11 +112,11 @@ Choices choices() {
   c.facets = {"triangles", "coplanar"};
   c.axes = {"x", "y", "z"};
   c.colourings = {"element quality", "region"};
-  const Options defaults{};
+  // The converter's defaults (mesh_defaults(): Steiner points where needed, coplanar facets): a
+  // MeshLab layer is a real surface, which most often has no CDT as given.
+  const Options defaults = mesh_defaults();
   c.default_algorithm = static_cast<int>(defaults.algorithm);  // Algorithm's order is that of the list
-  // Steiner points: on, as `sweepcdt mesh` does — most real surfaces have no CDT as given, and a
-  // MeshLab layer is a real surface. (The library's default, None, stays available.)
-  c.default_steiner = 0;
+  c.default_steiner = defaults.steiner == SteinerMode::Auto ? 0 : 1;
   c.default_facets = defaults.facets == FacetMode::Coplanar ? 1 : 0;
   return c;
 }

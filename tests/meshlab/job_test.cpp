@@ -34,13 +34,14 @@ JobInput cube_input(const std::string& output) {
   return in;
 }
 
-TEST(MeshLabJob, DefaultsAreTheLibrarysWhereItHasThem) {
+TEST(MeshLabJob, DefaultsAreTheConverters) {
   const Choices c = choices();
-  const Options defaults{};
+  const Options defaults = mesh_defaults();  // the converter's
   EXPECT_EQ(c.algorithms.at(c.default_algorithm), to_string(defaults.algorithm));
   for (int a = 0; a < 3; ++a) EXPECT_EQ(c.algorithms.at(a), to_string(static_cast<Algorithm>(a)));  // the job casts the index
   EXPECT_EQ(c.facets.at(c.default_facets), defaults.facets == FacetMode::Coplanar ? "coplanar" : "triangles");
-  EXPECT_EQ(c.steiner.at(c.default_steiner), "auto");  // as `sweepcdt mesh`
+  EXPECT_EQ(c.steiner.at(c.default_steiner), defaults.steiner == SteinerMode::Auto ? "auto" : "none");
+  EXPECT_EQ(c.facets.at(c.default_facets), "coplanar");  // as `sweepcdt mesh`
 }
 
 TEST(MeshLabJob, CubeWritesTheVolumeFileAndTheCutAway) {

@@ -105,7 +105,7 @@ def filter_script(path, output, cut_position=0.5, cut_axis=0, steiner=0):
                 % output
                 + enum("Algorithm", 0, ["sweep-sphere", "sweep-plane", "giftwrap"])
                 + enum("Steiner", steiner, ["auto", "none"])
-                + enum("Facets", 0, ["triangles", "coplanar"])
+                + enum("Facets", 1, ["triangles", "coplanar"])
                 + '  <Param type="RichString" value="0" name="Snap" description="" tooltip=""/>\n'
                 + '  <Param type="RichBool" value="false" name="Verify" description="" tooltip=""/>\n'
                 + enum("CutAxis", cut_axis, ["x", "y", "z"])

@@ -9,7 +9,7 @@ from conftest import signed_volumes, unit_cube
 
 def test_cube_fills_its_volume_with_positive_tetrahedra():
     points, triangles = unit_cube()
-    mesh = sweepcdt.tetrahedralize(points, triangles)
+    mesh = sweepcdt.tetrahedralize(points, triangles, facets="triangles")  # face ids: input triangles
     assert mesh.points.shape[1] == 3 and mesh.tetrahedra.shape[1] == 4
     assert mesh.points.dtype == np.float64 and mesh.tetrahedra.dtype == np.int64
     # Welding numbers points by first use in the triangles; point_ids maps input rows to mesh rows.
@@ -24,6 +24,19 @@ def test_cube_fills_its_volume_with_positive_tetrahedra():
     assert mesh.regions.shape == (len(mesh.tetrahedra),) and len(set(mesh.regions.tolist())) == 1
     assert mesh.stats["tetrahedra"] == len(mesh.tetrahedra)
     assert mesh.stats["steiner_points"] == len(mesh.points) - mesh.num_input_points == len(mesh.steiner_triangles)
+
+
+def test_by_default_each_flat_face_is_one_facet():
+    # The converter's default (facets="coplanar"): a face id names the face's first input triangle.
+    points, triangles = unit_cube()
+    faces = {}
+    for j, t in enumerate(triangles.tolist()):
+        normal = np.cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]])
+        faces.setdefault(tuple(np.sign(normal).astype(int)), []).append(j)
+    assert sweepcdt.DEFAULTS["facets"] == "coplanar"
+    mesh = sweepcdt.tetrahedralize(points, triangles)
+    assert set(mesh.triangle_ids.tolist()) == {min(js) for js in faces.values()}
+    assert len(faces) == 6
 
 
 def test_lists_and_other_dtypes_are_accepted():

@@ -3,13 +3,14 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "run_options.h"  // plugin/cli: the converter's defaults and --snap bound (header only)
+#include "sweepcdt/cdt.h"      // mesh_defaults(): the converter's defaults
+#include "sweepcdt/io/snap.h"  // io::kLargestSnap: the converter's bound
 
 namespace sweepcdt::python {
 
 RunKeywords converter_defaults() {
-  const cli::RunOptions cli_defaults;
-  return {cli_defaults.algorithm, cli_defaults.steiner, cli_defaults.facets, cli_defaults.snap, cli_defaults.check};
+  const Options defaults = mesh_defaults();
+  return {defaults.algorithm, defaults.steiner, defaults.facets, 0.0, false};
 }
 
 const char* name_of(SteinerMode mode) { return mode == SteinerMode::Auto ? "auto" : "none"; }
@@ -36,9 +37,9 @@ RunKeywords run_keywords(const std::optional<std::string>& algorithm, const std:
   }
   if (snap) {
     // The converter's bound: snapping repairs rounding noise, not modelling error.
-    if (!(*snap > 0 && *snap <= cli::kLargestSnap))
+    if (!(*snap > 0 && *snap <= io::kLargestSnap))
       throw std::invalid_argument("snap must be a tolerance relative to the bounding-box diagonal, above 0 and at most " +
-                                  std::to_string(cli::kLargestSnap) + " (e.g. 1e-12), or None");
+                                  std::to_string(io::kLargestSnap) + " (e.g. 1e-12), or None");
     k.snap = *snap;
   }
   k.check = check;

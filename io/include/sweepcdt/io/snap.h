@@ -16,6 +16,10 @@
 
 namespace sweepcdt::io {
 
+// The largest tolerance any front end accepts (relative to the bounding-box diagonal): snapping
+// repairs rounding noise, not modelling error. `sweepcdt --snap`, the Python module, MeshLab.
+inline constexpr double kLargestSnap = 1e-3;
+
 struct SnapReport {
   double tolerance = 0;            // absolute: relative tolerance × bounding-box diagonal
   uint64_t coordinates_moved = 0;  // of the welded points
