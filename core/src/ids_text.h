@@ -6,9 +6,12 @@
 namespace sweepcdt::detail {
 
 inline std::string ids_text(const uint32_t* ids, int count) {
-  std::string s = "(";
-  for (int i = 0; i < count; ++i) s += (i ? " " : "") + std::to_string(ids[i]);
-  return s + ")";
+  std::string s = "(";  // appended, not " " + ...: GCC 12 warns falsely (-Wrestrict) on that
+  for (int i = 0; i < count; ++i) {
+    if (i) s += ' ';
+    s += std::to_string(ids[i]);
+  }
+  return s += ')';
 }
 
 }  // namespace sweepcdt::detail

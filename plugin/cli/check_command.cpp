@@ -8,10 +8,9 @@
 #include "exit_codes.h"
 #include "run_options.h"
 #include "sweepcdt/io/to_plc.h"
-#include "sweepcdt/io/volume_mesh.h"
+#include "sweepcdt/io/verify_mesh.h"
 #include "sweepcdt/perturbation_order.h"
 #include "usage.h"
-#include "verify_mesh.h"
 
 namespace sweepcdt::cli {
 
@@ -58,7 +57,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
     }
   }
 
-  const MeshVerification v = verify_mesh(plc, mesh, facets);
+  const MeshVerification v = io::verify_mesh(plc, mesh, facets);
   const bool coplanar = facets == FacetMode::Coplanar;
   if (!quiet) {
     out << input << ": " << plc.num_simplices() << " triangles, " << plc.num_points() << " vertices\n"
@@ -74,8 +73,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
         << (v.total_problems == 1 ? "" : "s") << "\n";
     for (const auto& p : v.problems) err << "  " << output << ": " << p << "\n";
     if (v.total_problems > v.problems.size()) err << "  ... and " << v.total_problems - v.problems.size() << " more\n";
-    // The default mode is mesh's: a mesh made with --facets triangles fails it for its face ids.
-    if (coplanar && verify_mesh(plc, mesh, FacetMode::Triangles).ok())
+    if (v.suggest_triangles)
       err << "  note: " << output << " is the CDT of the input triangles, each a facet of its own: it was made with\n"
           << "  --facets triangles; check it with --facets triangles\n";
     if (v.suggest_coplanar)

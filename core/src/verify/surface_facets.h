@@ -1,4 +1,5 @@
-// The facets of the input surface, as `sweepcdt check --facets MODE` verifies a mesh against them.
+// Internal: the facets of the input surface, as verify_cdt() (sweepcdt/verify_cdt.h) verifies a
+// mesh against them under a FacetMode.
 //
 // The rule is the one `--facets` documents (FacetMode, sweepcdt/cdt.h), computed here from the
 // input alone so that check does not share the code that made the mesh: with Triangles every input
@@ -20,7 +21,7 @@
 
 #include "sweepcdt/cdt.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 
 struct SurfaceFacets {
   struct Edge {
@@ -46,4 +47,4 @@ SurfaceFacets group_surface_facets(const Plc<3>& input, FacetMode mode);
 // notation Negative keeps the input's order).
 std::array<uint32_t, 3> material_positive(const Plc<3>& input, uint32_t j);
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

@@ -1,14 +1,14 @@
-// The problems `sweepcdt check` finds (verify_mesh.h), collected by the steps of the verification
-// in their own files, and how they name points and vertex ids.
+// Internal: the problems verify_cdt() finds (sweepcdt/verify_cdt.h), collected by the steps of the
+// verification in their own files, and how they name points.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
 
-#include "verify_mesh.h"
+#include "sweepcdt/verify_cdt.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 
 class Problems {
  public:
@@ -31,13 +31,4 @@ inline std::string point_text(const double* p) {
   return buf;
 }
 
-inline std::string ids_text(const uint32_t* ids, int n) {
-  std::string s;
-  for (int i = 0; i < n; ++i) {
-    if (i) s += ' ';
-    s += std::to_string(ids[i]);
-  }
-  return s;
-}
-
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

@@ -1,4 +1,4 @@
-// How a volume mesh is checked against its surface, exactly, without trusting anything the mesh
+// verify_cdt() (sweepcdt/verify_cdt.h). How a volume mesh is checked against its surface, exactly, without trusting anything the mesh
 // file says beyond its points and tetrahedra:
 //
 // 1. The input's welded points come first in the mesh, bit for bit (the writers promise this).
@@ -29,12 +29,13 @@
 // no face ids: its Steiner points on edges inside a facet are fold-like points of that facet, its
 // pieces tile the facet, and a CDT of its pieces is a CDT of the polygons (the same points, the same
 // surface blocking visibility). Its face ids name input triangles, not facets, so it fails on them.
-#include "verify_mesh.h"
+#include "sweepcdt/verify_cdt.h"
 
 #include <algorithm>
 #include <array>
 #include <map>
 
+#include "../ids_text.h"
 #include "problems.h"
 #include "surface_facets.h"
 #include "surface_points.h"
@@ -43,8 +44,14 @@
 #include "sweepcdt/validate.h"
 #include "verify_facet_patches.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt {
 namespace {
+
+using detail::Problems;
+using detail::SurfaceFacets;
+using detail::SurfacePoints;
+using detail::Triangle;
+using detail::point_text;
 
 bool same_point(const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
@@ -54,7 +61,7 @@ bool same_rotation(const Triangle& a, const Triangle& b) {
 
 // The boundary facets of the tetrahedra (facets of exactly one), each oriented with its tetrahedron
 // on its positive side, in the order of their sorted ids. Over-shared facets are validate()'s to report.
-std::vector<Triangle> boundary_of(const io::VolumeMesh& mesh) {
+std::vector<Triangle> boundary_of(const TetMeshView& mesh) {
   std::map<Triangle, std::pair<int, Triangle>> facets;  // sorted ids -> (count, oriented facet)
   for (std::size_t t = 0; t < mesh.num_tetrahedra(); ++t) {
     const uint32_t* q = mesh.tetrahedra.data() + 4 * t;
@@ -77,7 +84,7 @@ std::vector<Triangle> boundary_of(const io::VolumeMesh& mesh) {
 // What solvers read as the boundary — the file's boundary triangles and their tags — must be the
 // tetrahedra's boundary facets, counterclockwise seen from outside, each tagged with its face id.
 // `pieces`: sorted ids -> (boundary facet oriented with its tetrahedron positive, its input facet).
-void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Triangle, std::pair<Triangle, uint32_t>>& pieces,
+void check_file_boundary(const TetMeshView& mesh, const std::map<Triangle, std::pair<Triangle, uint32_t>>& pieces,
                          const Plc<3>& input, const SurfaceFacets& facets, Problems& problems, MeshVerification& v) {
   v.file_boundary = mesh.num_boundary() > 0;
   if (!v.file_boundary) return;
@@ -91,7 +98,7 @@ void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Triangle, st
     Triangle key = g;
     std::sort(key.begin(), key.end());
     const auto it = pieces.find(key);
-    const std::string name = "the file's boundary triangle " + std::to_string(k) + " (" + ids_text(g.data(), 3) + ")";
+    const std::string name = "the file's boundary triangle " + std::to_string(k) + " " + detail::ids_text(g.data(), 3);
     if (it == pieces.end()) {
       problems.add(name + " is not a boundary facet of the tetrahedra");
       continue;
@@ -109,12 +116,12 @@ void check_file_boundary(const io::VolumeMesh& mesh, const std::map<Triangle, st
 
 // Steps 2 and 3 (the input points are checked): the boundary of the tetrahedra is the input's
 // surface, refined. Returns it as a PLC, each piece with its tetrahedron on the positive side.
-Plc<3> verify_surface(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode mode, MeshVerification& v) {
+Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mode, MeshVerification& v) {
   Problems problems(v);
   // 2. The facets, and the Steiner points on them.
-  const SurfaceFacets facets = group_surface_facets(input, mode);
+  const SurfaceFacets facets = detail::group_surface_facets(input, mode);
   v.facets = facets.num_facets();
-  const SurfacePoints on = locate_points(input, facets, mesh.points, problems);
+  const SurfacePoints on = detail::locate_points(input, facets, mesh.points, problems);
   v.steiner_exactly_on = on.exactly_on;
   Plc<3> refined;
   if (!v.ok()) return refined;
@@ -122,9 +129,9 @@ Plc<3> verify_surface(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode
   // 3. The boundary of the tetrahedra: pieces of the facets, tiling them.
   const std::vector<Triangle> boundary = boundary_of(mesh);
   v.boundary_triangles = boundary.size();
-  const std::vector<uint32_t> facet_of = verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
+  const std::vector<uint32_t> facet_of = detail::verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
   if (!v.ok()) return refined;
-  refined.points = mesh.points;
+  refined.points.assign(mesh.points.begin(), mesh.points.end());
   std::map<Triangle, std::pair<Triangle, uint32_t>> pieces;
   for (std::size_t i = 0; i < boundary.size(); ++i) {
     Triangle key = boundary[i];
@@ -138,9 +145,8 @@ Plc<3> verify_surface(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode
   return refined;
 }
 
-}  // namespace
-
-MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, FacetMode mode) {
+// Steps 1 to 4 under one FacetMode.
+MeshVerification verify_in_mode(const Plc<3>& input, const TetMeshView& mesh, FacetMode mode) {
   MeshVerification v;
   Problems problems(v);
   const std::size_t n = input.num_points(), total = mesh.num_points();
@@ -177,10 +183,10 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, Fa
 
   // 4. validate(): against the input itself when it is the surface as given.
   Triangulation<3> tri;
-  tri.points = mesh.points;
+  tri.points.assign(mesh.points.begin(), mesh.points.end());
   tri.num_input_points = static_cast<uint32_t>(total);
-  tri.simplices = mesh.tetrahedra;
-  if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions = mesh.regions;
+  tri.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
+  if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions.assign(mesh.regions.begin(), mesh.regions.end());
   compute_neighbors(tri);
   const bool exact_input = v.steiner_points == 0 && mode == FacetMode::Triangles;
   if (!exact_input) {
@@ -211,4 +217,13 @@ MeshVerification verify_mesh(const Plc<3>& input, const io::VolumeMesh& mesh, Fa
   return v;
 }
 
-}  // namespace sweepcdt::cli
+}  // namespace
+
+MeshVerification verify_cdt(const Plc<3>& input, const TetMeshView& mesh, FacetMode facets) {
+  MeshVerification v = verify_in_mode(input, mesh, facets);
+  // The default mode is mesh's (coplanar): a mesh made with --facets triangles fails it for its face ids.
+  if (!v.ok() && facets == FacetMode::Coplanar) v.suggest_triangles = verify_in_mode(input, mesh, FacetMode::Triangles).ok();
+  return v;
+}
+
+}  // namespace sweepcdt

@@ -4,10 +4,10 @@
 #include <numeric>
 #include <tuple>
 
-#include "problems.h"
+#include "../ids_text.h"
 #include "sweepcdt/predicates.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 namespace {
 
 struct EdgeUse {
@@ -35,7 +35,7 @@ bool same_facet(const Plc<3>& input, const EdgeUse& s, const EdgeUse& t) {
 
 std::string SurfaceFacets::name(uint32_t facet, const Plc<3>& input) const {
   const auto& t = triangles[facet];
-  if (t.size() == 1) return "input triangle " + std::to_string(t[0]) + " (" + ids_text(input.simplex(t[0]), 3) + ")";
+  if (t.size() == 1) return "input triangle " + std::to_string(t[0]) + " " + ids_text(input.simplex(t[0]), 3);
   std::string s = "the coplanar facet of input triangles ";
   for (std::size_t k = 0; k < t.size() && k < 3; ++k) s += (k ? ", " : "") + std::to_string(t[k]);
   return s + (t.size() > 3 ? ", ..." : "") + " (" + std::to_string(t.size()) + " triangles)";
@@ -92,4 +92,4 @@ SurfaceFacets group_surface_facets(const Plc<3>& input, FacetMode mode) {
   return g;
 }
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

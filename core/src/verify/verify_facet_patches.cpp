@@ -5,9 +5,10 @@
 #include <tuple>
 #include <utility>
 
+#include "../ids_text.h"
 #include "sweepcdt/predicates.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 namespace {
 
 using predicates::Sign;
@@ -72,9 +73,7 @@ void append_boundary(const Plc<3>& input, const SurfaceFacets& facets, const Sur
 
 std::string edge_text(uint32_t from, uint32_t to) {
   const uint32_t ids[2] = {from, to};
-  std::string s = "(";  // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) on that
-  s += ids_text(ids, 2);
-  return s += ')';
+  return ids_text(ids, 2);
 }
 
 // The pieces' edges against the facets' boundaries, both sorted.
@@ -111,7 +110,7 @@ void compare_edges(const Plc<3>& input, const SurfaceFacets& facets, const std::
 }  // namespace
 
 std::vector<uint32_t> verify_facet_patches(const Plc<3>& input, const SurfaceFacets& facets, const SurfacePoints& on,
-                                           const std::vector<double>& points, const std::vector<Triangle>& boundary, Problems& problems) {
+                                           std::span<const double> points, const std::vector<Triangle>& boundary, Problems& problems) {
   const auto p = [&](uint32_t v) { return points.data() + 3 * std::size_t{v}; };
   const bool triangles = facets.mode == FacetMode::Triangles;
   std::vector<Projection> projection;
@@ -129,12 +128,12 @@ std::vector<uint32_t> verify_facet_patches(const Plc<3>& input, const SurfaceFac
       common.swap(next);
     }
     if (common.empty()) {
-      problems.add("boundary triangle (" + ids_text(t.data(), 3) + ") does not lie on " + (triangles ? "an input triangle" : "one facet of the input"));
+      problems.add("boundary triangle " + ids_text(t.data(), 3) + " does not lie on " + (triangles ? "an input triangle" : "one facet of the input"));
       continue;
     }
     const uint32_t f = facet_of[i] = common.front();
     if (predicates::orient_projected<3>({p(t[0]), p(t[1]), p(t[2])}, projection[f].drop) != projection[f].sign)
-      problems.add("boundary triangle (" + ids_text(t.data(), 3) + ") on " + facets.name(f, input) + " has its tetrahedron on the outside of the surface");
+      problems.add("boundary triangle " + ids_text(t.data(), 3) + " on " + facets.name(f, input) + " has its tetrahedron on the outside of the surface");
     for (int k = 0; k < 3; ++k) {
       piece_edges.push_back(directed(f, t[k], t[(k + 1) % 3]));
       vertices.emplace_back(f, t[k]);
@@ -156,4 +155,4 @@ std::vector<uint32_t> verify_facet_patches(const Plc<3>& input, const SurfaceFac
   return facet_of;
 }
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

@@ -2,16 +2,28 @@
 
 #include <algorithm>
 
-#include "box_grid.h"
+#include "../box_tree.h"
 #include "sweepcdt/predicates.h"
 #include "sweepcdt/steiner_point.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 namespace {
+
+// The box of points given by ids into `points` (n x 3).
+Box<3> box_of(std::span<const double> points, const std::vector<uint32_t>& ids) {
+  Box<3> b;
+  for (int c = 0; c < 3; ++c) b.lo[c] = b.hi[c] = points[3 * std::size_t{ids.front()} + c];
+  for (uint32_t v : ids)
+    for (int c = 0; c < 3; ++c) {
+      b.lo[c] = std::min(b.lo[c], points[3 * std::size_t{v} + c]);
+      b.hi[c] = std::max(b.hi[c], points[3 * std::size_t{v} + c]);
+    }
+  return b;
+}
 
 class Splits {
  public:
-  explicit Splits(const std::vector<double>& points) : points_(points) {}
+  explicit Splits(std::span<const double> points) : points_(points) {}
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
 
   // Is s a point that refine can make on the segment ab: the rounded a + t (b - a), or b + t (a - b),
@@ -33,19 +45,19 @@ class Splits {
   }
 
  private:
-  const std::vector<double>& points_;
+  std::span<const double> points_;
 };
 
 }  // namespace
 
-SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, const std::vector<double>& points, Problems& problems) {
+SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, std::span<const double> points, Problems& problems) {
   const uint32_t n = static_cast<uint32_t>(input.num_points()), total = static_cast<uint32_t>(points.size() / 3);
   SurfacePoints r;
   r.on_edge.resize(facets.edges.size());
   r.on_facet.resize(facets.num_facets());
   r.facets_of.resize(total);
   std::vector<uint32_t> ridges;
-  std::vector<Box> ridge_boxes, facet_boxes;
+  std::vector<Box<3>> ridge_boxes, facet_boxes;
   for (uint32_t e = 0; e < facets.edges.size(); ++e) {
     r.on_edge[e] = {facets.edges[e].a, facets.edges[e].b};
     if (!facets.edges[e].ridge) continue;
@@ -60,27 +72,28 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, co
     for (uint32_t v : on) r.facets_of[v].push_back(f);
     facet_boxes.push_back(box_of(points, on));
   }
-  const BoxGrid ridge_grid(std::move(ridge_boxes)), facet_grid(std::move(facet_boxes));
+  const BoxTree<3> ridge_tree(std::move(ridge_boxes)), facet_tree(std::move(facet_boxes));
   const Splits splits(points);
 
   for (uint32_t s = n; s < total; ++s) {
     const double* ps = splits.p(s);
+    const Box<3> at{{ps[0], ps[1], ps[2]}, {ps[0], ps[1], ps[2]}};
     auto& on = r.facets_of[s];
-    for (uint32_t k : ridge_grid.near(ps)) {
-      if (!ridge_grid.holds(k, ps)) continue;
+    ridge_tree.any_overlap(at, [&](uint32_t k) {
       auto& line = r.on_edge[ridges[k]];
       std::size_t i = 0;
       while (i + 1 < line.size() && !splits.is_split(s, line[i], line[i + 1])) ++i;
-      if (i + 1 == line.size()) continue;
+      if (i + 1 == line.size()) return false;
       line.insert(line.begin() + static_cast<std::ptrdiff_t>(i) + 1, s);
       for (uint32_t j : facets.edges[ridges[k]].triangles) on.push_back(facets.facet_of[j]);
-      std::sort(on.begin(), on.end());
-      on.erase(std::unique(on.begin(), on.end()), on.end());
-      break;
-    }
+      return true;
+    });
     if (on.empty())  // a fold point
-      for (uint32_t f : facet_grid.near(ps))
-        if (facet_grid.holds(f, ps) && splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
+      facet_tree.for_each_overlap(at, [&](uint32_t f) {
+        if (splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
+      });
+    std::sort(on.begin(), on.end());
+    on.erase(std::unique(on.begin(), on.end()), on.end());
     if (on.empty()) {
       problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not a rounded point between two neighbouring points on " +
                    (facets.mode == FacetMode::Triangles ? "an input edge, nor between two points of one input triangle"
@@ -94,4 +107,4 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, co
   return r;
 }
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

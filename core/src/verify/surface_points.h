@@ -1,4 +1,4 @@
-// Step 2 of `sweepcdt check` (verify_mesh.cpp): where each vertex of the mesh lies on the input
+// Internal: step 2 of verify_cdt() (verify_cdt.cpp): where each vertex of the mesh lies on the input
 // surface, exactly, without trusting the mesh. Input vertices lie on the facets of their triangles.
 // Every further vertex (a Steiner point), in the order the mesh lists them, must be exactly a point
 // that `--steiner auto` can make (sweepcdt/steiner_point.h: the rounded a + t (b - a) for some t in
@@ -15,12 +15,13 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "problems.h"
 #include "surface_facets.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 
 struct SurfacePoints {
   std::vector<std::vector<uint32_t>> on_edge;    // per input edge: its points from a to b (ridges; else a, b)
@@ -31,6 +32,6 @@ struct SurfacePoints {
 
 // `points`: the mesh's (n x 3), the input's first (step 1). A Steiner point that is not reproduced
 // is a problem, and lies on no facet.
-SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, const std::vector<double>& points, Problems& problems);
+SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, std::span<const double> points, Problems& problems);
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail

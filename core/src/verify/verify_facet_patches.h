@@ -1,4 +1,4 @@
-// Step 3 of `sweepcdt check` (verify_mesh.cpp): the boundary of the tetrahedra is the input
+// Internal: step 3 of verify_cdt() (verify_cdt.cpp): the boundary of the tetrahedra is the input
 // surface, facet by facet (surface_facets.h), exactly.
 //
 // Each boundary triangle (a facet of one tetrahedron, oriented with the tetrahedron on its positive
@@ -18,18 +18,19 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "problems.h"
 #include "surface_facets.h"
 #include "surface_points.h"
 
-namespace sweepcdt::cli {
+namespace sweepcdt::detail {
 
 using Triangle = std::array<uint32_t, 3>;
 
 // `points`: the mesh's (n x 3). Returns, per boundary triangle, the facet it lies on (kNone if none).
 std::vector<uint32_t> verify_facet_patches(const Plc<3>& input, const SurfaceFacets& facets, const SurfacePoints& on,
-                                           const std::vector<double>& points, const std::vector<Triangle>& boundary, Problems& problems);
+                                           std::span<const double> points, const std::vector<Triangle>& boundary, Problems& problems);
 
-}  // namespace sweepcdt::cli
+}  // namespace sweepcdt::detail
