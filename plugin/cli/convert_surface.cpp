@@ -73,12 +73,11 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     r.computed = true;
     r.simplices = tri.num_simplices();
 
-    if (options.check && !check_before_writing(tri, triangulated, progress, r)) {
+    const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
+    if (options.check && !verify_before_writing(plc, mesh, cdt_options.facets, progress, r)) {
       r.seconds_total = since(start);
       return r;
     }
-
-    const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
 
     // Last chance to stop: once the writer runs, the file is completed (it is atomic either way).
     throw_if_interrupted();

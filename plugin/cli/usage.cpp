@@ -52,7 +52,7 @@ std::string mesh_help() {
          "                      design (z = 0 stored as z = 5e-17) are exactly flat; 0 < TOL <= 1e-3,\n"
          "                      e.g. --snap 1e-12. Points that meet are merged; the\n"
          "                      summary and --stats say how many moved. `check` needs the same --snap\n"
-         "  --check             validate the result exactly once more before writing; refuse (exit 6) if not valid\n"
+         "  --check             verify the result exactly before writing, as `check` does; refuse (exit 6) if not valid\n"
          "reporting:\n"
          "  --stats FILE.json   counts, Steiner points, per-phase times, peak memory (written atomically)\n"
          "  -q, --quiet         only errors\n"
