@@ -10,6 +10,7 @@
 
 #include "any_dimension.h"
 #include "arrays.h"
+#include "check_files.h"
 #include "errors.h"
 #include "options.h"
 #include "running.h"
@@ -128,5 +129,6 @@ PYBIND11_MODULE(_sweepcdt, m) {
   m.def("read_volume_mesh", &read_volume_mesh, py::arg("path"));
   m.def("write_volume_mesh", &write_volume_mesh, py::arg("path"), py::arg("points"), py::arg("tetrahedra"),
         py::arg("regions"), py::arg("triangles"), py::arg("triangle_ids"), py::arg("format"));
+  m.def("check_files", &check_files, py::arg("input"), py::arg("output"), py::arg("facets"), py::arg("snap"));
   m.def("defaults", &defaults, "The converter's defaults: {'algorithm': ..., 'steiner': ..., 'facets': ...}");
 }

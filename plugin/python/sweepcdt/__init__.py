@@ -18,6 +18,7 @@ import os
 
 from . import errors
 from ._sweepcdt import cdt as _cdt
+from ._sweepcdt import check_files as _check_files
 from ._sweepcdt import defaults as _defaults
 from ._sweepcdt import mesh_file as _mesh_file
 from ._sweepcdt import read_surface as _read_surface
@@ -28,7 +29,7 @@ from .errors import CancelledError, CheckError, Error, InvalidInputError, NoCdtE
 from .result import Surface, TetMesh, Triangulation
 
 __all__ = [
-    "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
+    "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "check_files", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
     "Error", "InvalidInputError", "NoCdtError", "OutputError", "CheckError", "CancelledError",
 ]
 
@@ -119,3 +120,13 @@ def write_volume_mesh(path, mesh=None, *, points=None, tetrahedra=None, regions=
         points, tetrahedra, regions = mesh.points, mesh.tetrahedra, mesh.regions
         triangles, triangle_ids = mesh.triangles, mesh.triangle_ids
     _write_volume_mesh(os.fspath(path), points, tetrahedra, regions, triangles, triangle_ids, format)
+
+
+def check_files(input, output, *, facets=DEFAULTS["facets"], snap=None):
+    """Verify exactly, as ``sweepcdt check INPUT OUTPUT`` does, that the volume-mesh file ``output`` is
+    the CDT of the surface file ``input``, trusting only its points and tetrahedra. ``facets`` and
+    ``snap``: the ones the mesh was made with. Returns a dict: ``valid``, ``problems`` (the first
+    ones, one line each), ``total_problems``, ``steiner_points``, ``boundary_triangles``,
+    ``perturbation_order``, ``suggest_coplanar``/``suggest_triangles`` (it passes in the other
+    facets mode), ... Raises InvalidInputError when a file cannot be read."""
+    return _check_files(os.fspath(input), os.fspath(output), facets, snap)
