@@ -1,5 +1,5 @@
 // verify_cdt(): is a tetrahedral mesh exactly the CDT of a closed surface? The proof behind
-// `sweepcdt check`, the Python module's sweepcdt.check and the hosts' "verify" options.
+// `sweepcdt check`, the Python module's sweepcdt.check_files and the hosts' "verify" options.
 //
 // It trusts nothing the mesh says beyond its points and tetrahedra (and checks the boundary
 // triangles and face ids it lists, when it lists them): the input points come first, bit for bit;
