@@ -187,14 +187,20 @@ TEST(VerifyMesh, TetrahedraOutsideTheSurfaceAreRejected) {
   }
 }
 
-// Paper §6: the grid box has its CDT under perturbation order 2 only; verify finds that order.
+// Paper §6: the grid box has its CDT under perturbation order 2 only; verify finds that order, and
+// so it does against the coplanar polygons (without the face ids, which name triangles).
 TEST(VerifyMesh, FindsTheLaterPerturbationOrder) {
   TempDir dir;
   const Plc<3> input = imported(dir, fixtures::grid_box_surface(2));
-  const VolumeMesh mesh = mesh_of(input, SteinerMode::None, FacetMode::Triangles);
+  VolumeMesh mesh = mesh_of(input, SteinerMode::None, FacetMode::Triangles);
   const MeshVerification v = verify_mesh(input, mesh, FacetMode::Triangles);
   EXPECT_TRUE(v.ok()) << all(v);
   EXPECT_EQ(v.perturbation_order, 2);
+  mesh.boundary_tags.assign(mesh.num_boundary(), kNone);
+  const MeshVerification coplanar = verify_mesh(input, mesh, FacetMode::Coplanar);
+  EXPECT_TRUE(coplanar.ok()) << all(coplanar);
+  EXPECT_EQ(coplanar.facets, 6u);
+  EXPECT_EQ(coplanar.perturbation_order, 2);
 }
 
 // FacetMode::Coplanar: the boundary triangles tile the polygons of coplanar input triangles. Checked
@@ -227,24 +233,29 @@ TEST(VerifyMesh, CoplanarFacetsAndTheOtherModesSuggestion) {
   EXPECT_FALSE(untagged.file_tags);
 }
 
-// A Steiner point that no tetrahedron uses, on a facet's boundary edge: the facet is not tiled.
+// A Steiner point that no tetrahedron uses, on a facet's boundary edge or on an edge inside a facet
+// (the cube's face diagonals): the facet is not tiled.
 TEST(VerifyMesh, PointsNoTetrahedronUsesAreRejected) {
   TempDir dir;
   const Plc<3> input = imported(dir, cube_soup(0, 1));
-  VolumeMesh m = mesh_of(input, SteinerMode::None, FacetMode::Coplanar);
-  ASSERT_TRUE(verify_mesh(input, m, FacetMode::Coplanar).ok());
-  // An edge of the cube: two input vertices differing in one coordinate.
-  const uint32_t a = 0;
-  uint32_t b = 1;
-  const auto differing = [&](uint32_t v) { return (m.points[3 * v] != m.points[0]) + (m.points[3 * v + 1] != m.points[1]) + (m.points[3 * v + 2] != m.points[2]); };
-  while (differing(b) != 1) ++b;
-  double x[3];
-  point_on_segment(&m.points[3 * a], &m.points[3 * b], 0.5, x);
-  m.points.insert(m.points.end(), x, x + 3);
-  const MeshVerification v = verify_mesh(input, m, FacetMode::Coplanar);
-  EXPECT_TRUE(says(v, "Steiner point 8 lies on ")) << all(v);
-  EXPECT_TRUE(says(v, " but is a vertex of none of its boundary triangles")) << all(v);
-  EXPECT_TRUE(says(v, "is an edge of none of its boundary triangles")) << all(v);
+  const VolumeMesh mesh = mesh_of(input, SteinerMode::None, FacetMode::Coplanar);
+  ASSERT_TRUE(verify_mesh(input, mesh, FacetMode::Coplanar).ok());
+  // Cube corners differing from corner 0 in one coordinate span an edge (a ridge), in two a face's
+  // diagonal (inside the face's facet, an input edge or not).
+  const auto differing = [&](uint32_t v) { return (mesh.points[3 * v] != mesh.points[0]) + (mesh.points[3 * v + 1] != mesh.points[1]) + (mesh.points[3 * v + 2] != mesh.points[2]); };
+  for (const bool ridge : {true, false}) {
+    uint32_t b = 1;
+    while (b < 8 && differing(b) != (ridge ? 1 : 2)) ++b;
+    ASSERT_LT(b, 8u);
+    VolumeMesh m = mesh;
+    double x[3];
+    point_on_segment(&m.points[0], &m.points[3 * b], 0.5, x);
+    m.points.insert(m.points.end(), x, x + 3);
+    const MeshVerification v = verify_mesh(input, m, FacetMode::Coplanar);
+    EXPECT_TRUE(says(v, ridge ? "Steiner point 8 lies on " : "Steiner point 8 lies on the coplanar facet of input triangles")) << all(v);
+    EXPECT_TRUE(says(v, " but is a vertex of none of its boundary triangles")) << all(v);
+    EXPECT_EQ(says(v, "is an edge of none of its boundary triangles"), ridge) << all(v);
+  }
 }
 
 // The two files, read as `sweepcdt check` reads them.
