@@ -30,9 +30,12 @@ struct CliRun {
 inline std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // Runs `sweepcdt ARGS` (ARGS as shell words), output captured to a log in `dir` (not listed by files_in).
-inline CliRun run(const std::string& args, const TempDir& dir) {
+// `hang_guard`: if above 0, the run is killed after that many seconds (exit 124): a guard against a
+// hang only, far above any run's time.
+inline CliRun run(const std::string& args, const TempDir& dir, int hang_guard = 0) {
   const auto log = dir.path() / ".log";
-  const std::string cmd = std::string(SWEEPCDT_CLI) + " " + args + " > " + quoted(log) + " 2>&1 < /dev/null";
+  const std::string guard = hang_guard > 0 ? "timeout " + std::to_string(hang_guard) + " " : "";
+  const std::string cmd = guard + std::string(SWEEPCDT_CLI) + " " + args + " > " + quoted(log) + " 2>&1 < /dev/null";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);
   std::stringstream text;

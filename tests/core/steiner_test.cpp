@@ -4,12 +4,14 @@
 // rounding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/steiner_point.h"
 #include "sweepcdt/validate.h"
 #include "test_shapes.h"
 
@@ -205,3 +207,41 @@ TEST(Steiner, NothingToDoWhenACdtExists) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two tetrahedra: A's apex is the origin; B's bottom edge passes 2^-94 above it, from (0, -1, 2^-40)
+// to (0, 1, -2^-40 + 2^-93). That edge is not Delaunay (A's apex all but lies on it), and its
+// midpoint, computed as a + (b - a)/2, rounds to exactly (0, 0, 0): A's apex. (b - a in z is
+// -2^-39 (1 - 2^-54), a tie that rounds to -2^-39.)
+Plc<3> edge_over_an_apex() {
+  Plc<3> plc;
+  const double d = std::ldexp(1.0, -40), e = std::ldexp(1.0, -93);
+  plc.points = {0, 0, 0, 1, 0, -1, -1, 0.5, -1, -1, -0.5, -1,  // A
+                0, -1, d, 0, 1, -d + e, 0.5, 0, 1, -0.5, 0, 1};  // B
+  fixtures::add_tetrahedron(plc, {0, 1, 2, 3});
+  fixtures::add_tetrahedron(plc, {4, 5, 6, 7});
+  return plc;
+}
+
+}  // namespace
+
+// A split point that rounds onto an existing point must not reach the Delaunay triangulation as a
+// duplicate (it did: "delaunay_tetrahedra: points coincide", an internal error): refine takes
+// another point of the segment, which `sweepcdt check` recognises as well.
+TEST(Steiner, SplitPointThatRoundsOntoAnotherPoint) {
+  const Plc<3> plc = edge_over_an_apex();
+  double midpoint[3];
+  point_on_segment(plc.point(4), plc.point(5), 0.5, midpoint);
+  ASSERT_TRUE(std::equal(midpoint, midpoint + 3, plc.point(0))) << "the construction must round onto A's apex";
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(plc, options, &refined);
+  EXPECT_TRUE(validate_triangulated(tri, refined).ok());
+  ASSERT_GT(refined.num_points(), plc.num_points());
+  bool on_b_edge = false;
+  for (uint32_t s = static_cast<uint32_t>(plc.num_points()); s < refined.num_points(); ++s)
+    on_b_edge = on_b_edge || is_point_on_segment(plc.point(4), plc.point(5), refined.point(s));
+  EXPECT_TRUE(on_b_edge) << "B's bottom edge is split";
+}

@@ -9,7 +9,8 @@
 //      triangulation as the sweep sphere, kept between rounds; only segments near the new points
 //      are looked up again);
 //   2. every segment that is not one of its edges is split — at a power-of-two distance from its
-//      end when exactly one end is an input vertex, at its midpoint otherwise (the concentric-shell
+//      end when exactly one end is an input vertex, at its midpoint otherwise (a point that would
+//      round onto an existing one takes another t: steiner_point.h) (the concentric-shell
 //      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
 //      about it, so segments at a small angle do not split each other without end);
 //   3. the triangles holding a split segment are split at the new point (facet-interior edges are
@@ -18,7 +19,10 @@
 // a split point is computed in floating point (sweepcdt/steiner_point.h), so it lies on its segment
 // only to within a few units of rounding, and the triangles of a facet that meet at an edge from it
 // are then not exactly coplanar. Such an edge is a ridge of the refined PLC like a segment; when it
-// is not Delaunay it becomes a segment and the rounds go on (its split points lie inside the facet).
+// is not Delaunay it is flipped to the other diagonal of its quadrilateral if that one is Delaunay
+// (facet_flips.h), else it becomes a segment and the rounds go on (its split points lie inside the
+// facet). The shell parameter is rounded to 20 bits (sweepcdt/steiner_point.h), so on surfaces with
+// float coordinates most points lie exactly on their segments and make no folds at all.
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 #pragma once
