@@ -1,6 +1,8 @@
 // Paper §3, "drop face": the ray test and the order of strikes along the ray.
 #include "sweepcdt/predicates/ray.h"
 
+#include <cmath>
+
 #include "arith.h"
 #include "sweepcdt/predicates/orientation.h"
 
@@ -47,6 +49,20 @@ Sign direction_sign(const Sweep& sweep, const double* v, const Coords<D>& f) {
   return Sign::Zero;
 }
 
+// Does f have a vertex at x? Then orient(f, x) = 0 exactly and, on the sphere, g_j = -o for
+// x = Delta_j, so for two such faces the delta^j coefficient o2 g1_j - o1 g2_j = -o2 o1 + o1 o2 is
+// identically zero: every ray toward a seed vertex Delta_0 strikes all faces around Delta_0 at t = 1,
+// and the exact stage would evaluate that zero for each pair (an exact-zero fast path, no tolerance).
+template <int D>
+bool has_point(const Coords<D>& f, const double* x) {
+  for (int i = 0; i < D; ++i) {
+    bool equal = true;
+    for (int k = 0; k < D && equal; ++k) equal = f[i][k] == x[k] && std::isfinite(x[k]);
+    if (equal) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 // t1 - t2 = (o2 g1 - o1 g2) / (g1 g2): the sign of the numerator is that of its first non-zero
@@ -57,6 +73,8 @@ Sign compare_hits(const Sweep& sweep, const double* v, const Coords<D>& f1, cons
   if (g1 == Sign::Zero || g2 == Sign::Zero) return Sign::Zero;  // a face parallel to every direction
   const int terms = std::is_same_v<Sweep, PlaneSweep> ? D : D + 1;
   for (int j = 0; j < terms; ++j) {
+    if constexpr (!std::is_same_v<Sweep, PlaneSweep>)
+      if (has_point<D>(f1, sweep.delta[j]) && has_point<D>(f2, sweep.delta[j])) continue;  // term j is 0
     const Sign n = detail::filtered_sign([&](auto& a) {
       const auto o1 = detail::orient_det<D>(a, with_point<D>(f1, v));
       const auto o2 = detail::orient_det<D>(a, with_point<D>(f2, v));
