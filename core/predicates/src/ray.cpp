@@ -11,13 +11,17 @@ namespace sweepcdt::predicates {
 template <int D>
 Coords<D + 1> with_point(const Coords<D>& f, const double* p);  // sweep_sides.cpp
 
+// The ray strikes f iff f lies behind every other facet g_i of conv(f ∪ v) (g_i = f with f_i
+// replaced by v). orient(g_i, f_i) is orient(f, v) with rows i and D swapped, i.e. -o: so f_i is
+// behind g_i iff behind_sign(g_i) = -o, one orientation per facet instead of side_of()'s two.
 template <int D, class Sweep>
 bool ray_hits(const Sweep& sweep, const double* v, const Coords<D>& f) {
-  if (orient<D>(with_point<D>(f, v)) == Sign::Zero) return false;  // conv(f ∪ v) degenerate
+  const Sign o = orient<D>(with_point<D>(f, v));
+  if (o == Sign::Zero) return false;  // conv(f ∪ v) degenerate
   for (int i = 0; i < D; ++i) {
     Coords<D> g = f;  // the hyperface of conv(f ∪ v) opposite f_i
     g[i] = v;
-    if (side_of<D>(sweep, g, f[i]) != Side::Behind) return false;
+    if (behind_sign<D>(sweep, g) != -o) return false;
   }
   return true;
 }
