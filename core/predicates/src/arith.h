@@ -111,8 +111,8 @@ Dyadic exact_value(const Formula& formula) {
     const int value_bits = bound.degree * (input_bits + 1) + bound.extra;
     const long exponent = static_cast<long>(bound.degree) * scan.lowest_bit;
     const auto run = [&](auto arith) {
-      const auto limbs = formula(arith).twos_complement();
-      return Dyadic::from_twos_complement(limbs.data(), static_cast<int>(limbs.size()), exponent);
+      const auto v = formula(arith);
+      return Dyadic::from_magnitude(v.mag.data(), v.size, v.negative, exponent);
     };
     if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
     if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});

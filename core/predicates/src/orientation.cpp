@@ -101,6 +101,16 @@ Sign orient2(const Coords<3>& p) {
   return detail::exact_sign(OrientFormula<2>{p});
 }
 
+// The stages after a failed filter, out of line so the filters stay small where they are inlined.
+[[gnu::noinline]] Sign orient3_exact(const Coords<4>& p) {
+  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
+  return detail::exact_sign(OrientFormula<3>{p});
+}
+[[gnu::noinline]] Sign insphere3_exact(const Coords<5>& p) {
+  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
+  return detail::exact_sign(InsphereFormula<3>{p});
+}
+
 Sign orient3(const Coords<4>& p) {
   const double* a = p[0];
   const double* b = p[1];
@@ -123,8 +133,7 @@ Sign orient3(const Coords<4>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
-  return detail::exact_sign(OrientFormula<3>{p});
+  return orient3_exact(p);
 }
 
 Sign insphere3(const Coords<5>& p) {
@@ -158,8 +167,7 @@ Sign insphere3(const Coords<5>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
-  return detail::exact_sign(InsphereFormula<3>{p});
+  return insphere3_exact(p);
 }
 
 }  // namespace

@@ -124,21 +124,6 @@ struct WideInt {
     return r;
   }
   int sign() const { return size == 0 ? 0 : (negative ? -1 : 1); }
-
-  // The value in two's complement over all L limbs (little-endian), for Dyadic::from_twos_complement.
-  std::array<uint64_t, L> twos_complement() const {
-    std::array<uint64_t, L> out{};
-    for (int i = 0; i < size; ++i) out[i] = mag[i];
-    if (negative) {
-      unsigned __int128 carry = 1;  // ~x + 1
-      for (int i = 0; i < L; ++i) {
-        carry += static_cast<uint64_t>(~out[i]);
-        out[i] = static_cast<uint64_t>(carry);
-        carry >>= 64;
-      }
-    }
-    return out;
-  }
 };
 
 }  // namespace sweepcdt::predicates::detail
