@@ -30,7 +30,7 @@ def median(xs):
     xs = sorted(xs)
     return xs[len(xs) // 2]
 
-rows, growth = [], {}
+rows, growth, sphere_growth = [], {}, {}
 with tempfile.TemporaryDirectory() as tmp:
     for surface, sizes in CASES:
         for size in sizes:
@@ -58,23 +58,41 @@ with tempfile.TemporaryDirectory() as tmp:
             row["cgal"], row["cgal MB"] = json.loads(out)["median_seconds"], mb
             rows.append(row)
             growth.setdefault(surface, []).append((row["triangles"], row["sweep-plane"]))
+            sphere_growth.setdefault(surface, []).append((row["triangles"], row["sweep-sphere"]))
             print(json.dumps(row), file=sys.stderr, flush=True)
 
 def fmt(x, digits=3):
     return "fail" if x is None else f"{x:.{digits}f}"
 
-print("| surface | triangles | sweep-plane s | sweep-sphere s | tetgen -pQM s | CGAL Delaunay s | plane/tetgen | plane/CGAL | MB plane / tetgen | tets/tetgen Steiner |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+# sweep-sphere is the default algorithm: its ratios are the ones the targets (issue 16) are about.
+print("| surface | triangles | sweep-plane s | sweep-sphere s | tetgen -pQM s | CGAL Delaunay s | plane/tetgen | plane/CGAL "
+      "| sphere/tetgen | sphere/CGAL | MB sphere / tetgen | tets/tetgen Steiner |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+def ratio(a, b, digits):
+    return "—" if a is None else f"{a / b:.{digits}f}"
 for r in rows:
-    p = r["sweep-plane"]
-    ratio_t = "—" if p is None else f"{p / r['tetgen']:.2f}"
-    ratio_c = "—" if p is None else f"{p / r['cgal']:.1f}"
+    p, q = r["sweep-plane"], r["sweep-sphere"]
     err = r["sweep-plane error"] or r["sweep-sphere error"]
-    print(f"| {r['surface']} | {r['triangles']} | {fmt(p)} | {fmt(r['sweep-sphere'])} | {fmt(r['tetgen'])} | {fmt(r['cgal'])} "
-          f"| {ratio_t} | {ratio_c} | {r['sweep-plane MB']:.0f} / {r['tetgen MB']:.0f} | {r['sweep-plane tets']} / {r['tetgen steiner']}"
+    print(f"| {r['surface']} | {r['triangles']} | {fmt(p)} | {fmt(q)} | {fmt(r['tetgen'])} | {fmt(r['cgal'])} "
+          f"| {ratio(p, r['tetgen'], 2)} | {ratio(p, r['cgal'], 1)} | {ratio(q, r['tetgen'], 2)} | {ratio(q, r['cgal'], 1)} "
+          f"| {r['sweep-sphere MB']:.0f} / {r['tetgen MB']:.0f} | {r['sweep-plane tets']} / {r['tetgen steiner']}"
           + (f" ({err[:60]})" if err else "") + " |")
 for surface, pts in growth.items():
     pts = [(n, t) for n, t in pts if t and t > 0]
     if len(pts) >= 2:
         (n0, t0), (n1, t1) = pts[0], pts[-1]
         print(f"\n{surface}: time ~ n^{math.log(t1 / t0) / math.log(n1 / n0):.2f} from {n0} to {n1} triangles (sweep-plane)")
+for surface, pts in sphere_growth.items():
+    pts = [(n, t) for n, t in pts if t and t > 0]
+    if len(pts) >= 2:
+        (n0, t0), (n1, t1) = pts[0], pts[-1]
+        print(f"{surface}: time ~ n^{math.log(t1 / t0) / math.log(n1 / n0):.2f} from {n0} to {n1} triangles (sweep-sphere)")
+# Exactly cospherical against the jittered sphere of the same size (same triangle count).
+for r in rows:
+    if r["surface"] != "cospherical":
+        continue
+    for j in rows:
+        if j["surface"] == "icosphere" and j["triangles"] == r["triangles"]:
+            for a in ("sweep-plane", "sweep-sphere"):
+                if r[a] and j[a]:
+                    print(f"cospherical / icosphere at {r['triangles']} triangles: {r[a] / j[a]:.1f}x ({a})")

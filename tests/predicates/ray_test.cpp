@@ -164,6 +164,63 @@ TYPED_TEST(Ray, SphereSweepOnGrid) {
   expect_coverage(stats);
 }
 
+// Faces through a seed vertex: every ray toward Delta_0 strikes them all at t = 1, so compare_hits
+// skips the delta^j terms that vanish identically (both faces through Delta_j, ray.cpp) and must
+// still order them as the perturbed ray does. Delta_1 is sometimes a vertex of the faces too.
+TYPED_TEST(Ray, SphereSweepFacesThroughSeedVertex) {
+  constexpr int D = TypeParam::value;
+  Rng rng(0x7a900004 + D);
+  FailureBudget budget;
+  RayStats stats;
+  for (int round = 0; round < 80; ++round) {
+    std::array<Point<D>, D + 1> seed;
+    pr::Coords<D + 1> delta;
+    do {
+      for (int j = 0; j <= D; ++j) {
+        seed[j] = grid_point<D>(rng, -3, 3);
+        delta[j] = seed[j].data();
+      }
+    } while (ref::orient(vecs<D>(delta)) == 0);
+    const pr::SphereSweep<D> sweep{delta};
+    const Point<D> v = grid_point<D>(rng, -3, 3);
+    if (v == seed[0]) continue;
+    const ref::Vec vv = vec<D>(v.data());
+    const ref::Vec dir = ref::sphere_direction(vv, vecs<D>(delta), ref::ray_delta());
+    std::vector<std::pair<Face<D>, ref::Q>> struck;
+    for (int n = 0; n < 40; ++n) {
+      Face<D> f;
+      f[0] = seed[0];
+      for (int i = 1; i < D; ++i) f[i] = (i == 1 && n % 3 == 0) ? seed[1] : grid_point<D>(rng, -3, 3);
+      if (!ref::hyperplane_through(vecs<D>(coords<D>(f)))) continue;
+      ++stats.faces;
+      const RefStrike e = reference_strike<D>(vv, dir, f);
+      if (e.kind == RefHit::Boundary) {
+        ++stats.skipped;
+        continue;
+      }
+      const bool got = pr::ray_hits<D>(sweep, v.data(), coords<D>(f));
+      if (got != (e.kind == RefHit::Hit) && budget.fail())
+        ADD_FAILURE() << "ray_hits<" << D << "> expected " << (e.kind == RefHit::Hit) << "\n" << describe<D>(sweep, v)
+                      << "f:\n" << dump<D>(coords<D>(f));
+      if (e.kind == RefHit::Hit) struck.emplace_back(f, e.t), ++stats.hits;
+    }
+    for (std::size_t i = 0; i < struck.size(); ++i)
+      for (std::size_t j = 0; j < struck.size(); ++j) {
+        const int c = cmp(struck[i].second, struck[j].second);
+        const int expected = c < 0 ? -1 : c > 0;
+        const Sign got = pr::compare_hits<D>(sweep, v.data(), coords<D>(struck[i].first), coords<D>(struck[j].first));
+        ++stats.pairs;
+        stats.equal_pairs += expected == 0 && i != j;
+        if (pr::to_int(got) != expected && budget.fail())
+          ADD_FAILURE() << "compare_hits<" << D << "> expected " << sign_name(expected) << ", got " << sign_name(got)
+                        << "\n" << describe<D>(sweep, v) << "f1:\n" << dump<D>(coords<D>(struck[i].first))
+                        << "f2:\n" << dump<D>(coords<D>(struck[j].first));
+      }
+  }
+  EXPECT_EQ(budget.failures, 0) << stats.faces << " faces, " << stats.hits << " strikes, " << stats.pairs << " pairs";
+  EXPECT_GT(stats.pairs, 200) << "too few pairs of struck faces through Delta_0";
+}
+
 TYPED_TEST(Ray, RandomDoubles) {
   constexpr int D = TypeParam::value;
   Rng rng(0x7a900003 + D);

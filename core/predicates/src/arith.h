@@ -19,14 +19,18 @@
 
 namespace sweepcdt::predicates::detail {
 
+// one(): the constant 1, for formulas with constant entries (the perturbation's unit columns). Such a
+// formula must still be homogeneous in the differences for the fixed-width stage (see exact_value).
 struct FilterArith {
   using T = Approx;
   static T diff(double a, double b) { return approx_difference(a, b); }
+  static T one() { return {1.0, 1.0, 0}; }  // exact: no rounding
 };
 
 struct ExactArith {
   using T = Dyadic;
   static T diff(double a, double b) { return Dyadic(a) - Dyadic(b); }
+  static T one() { return Dyadic(1.0); }
 };
 
 inline Sign sign_of(const Dyadic& d) { return static_cast<Sign>(d.sign()); }
@@ -75,6 +79,7 @@ struct ScanArith {
     see(b);
     return {1, 0};
   }
+  static T one() { return {0, 1}; }  // |1| < 2^1
 };
 
 // Inputs scaled by 2^-lowest_bit are integers below 2^62; evaluated in WideInt<L>.
@@ -90,6 +95,7 @@ struct WideArith {
     return d.negative ? -magnitude : magnitude;
   }
   T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
+  static T one() { return T::from_int64(1); }  // unscaled: homogeneous formulas only
 };
 
 // Exact value of a formula as a Dyadic, computed in fixed-width integers when the dry run proves
@@ -106,7 +112,7 @@ Dyadic exact_value(const Formula& formula) {
     const long exponent = static_cast<long>(bound.degree) * scan.lowest_bit;
     const auto run = [&](auto arith) {
       const auto v = formula(arith);
-      return Dyadic::from_twos_complement(v.limb.data(), static_cast<int>(v.limb.size()), exponent);
+      return Dyadic::from_magnitude(v.mag.data(), v.size, v.negative, exponent);
     };
     if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
     if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
@@ -168,7 +174,7 @@ T determinant(const std::array<T, N * N>& a) {
     return a[0];
   } else {
     static constexpr auto subsets = subsets_by_size<N>();
-    std::array<T, (1u << N)> minor{};
+    std::array<T, (1u << N)> minor;  // every entry read is written first (no zero-fill of wide ints)
     for (int r = 0; r < N; ++r) minor[1u << r] = a[r * N];
     for (std::size_t m = N; m < subsets.size(); ++m) {
       const unsigned mask = subsets[m].mask;
@@ -209,13 +215,11 @@ typename Arith::T normal_component(Arith& arith, const Points& f, int k) {
   using T = typename Arith::T;
   constexpr int M = D - 1;
   std::array<T, M * M> m;
-  for (int i = 0; i < M; ++i) {
-    int col = 0;
-    for (int axis = 0; axis < D; ++axis) {
-      if (axis == k) continue;
-      m[i * M + col++] = arith.diff(f[i][axis], f[M][axis]);
+  for (int i = 0; i < M; ++i)
+    for (int col = 0; col < M; ++col) {
+      const int axis = col < k ? col : col + 1;  // every axis but k
+      m[i * M + col] = arith.diff(f[i][axis], f[M][axis]);
     }
-  }
   T det = determinant<M>(m);
   return ((D + k) & 1) ? -det : det;
 }

@@ -8,20 +8,11 @@
 
 namespace sweepcdt::predicates::detail {
 
-Dyadic Dyadic::from_twos_complement(const uint64_t* limbs, int count, long exponent) {
-  const bool negative = (limbs[count - 1] >> 63) != 0;
-  std::vector<uint64_t> magnitude(limbs, limbs + count);
-  if (negative) {  // negate: invert and add one
-    unsigned __int128 carry = 1;
-    for (auto& x : magnitude) {
-      carry += static_cast<uint64_t>(~x);
-      x = static_cast<uint64_t>(carry);
-      carry >>= 64;
-    }
-  }
+Dyadic Dyadic::from_magnitude(const uint64_t* limbs, int count, bool negative, long exponent) {
   Dyadic r;
-  mpz_import(r.mantissa_.get_mpz_t(), static_cast<size_t>(count), -1, sizeof(uint64_t), 0, 0, magnitude.data());
-  if (negative) r.mantissa_ = -r.mantissa_;
+  if (count == 0) return r;
+  mpz_import(r.mantissa_.get_mpz_t(), static_cast<size_t>(count), -1, sizeof(uint64_t), 0, 0, limbs);
+  if (negative) mpz_neg(r.mantissa_.get_mpz_t(), r.mantissa_.get_mpz_t());
   r.exponent_ = exponent;
   return r;
 }

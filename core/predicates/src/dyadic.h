@@ -12,8 +12,8 @@ class Dyadic {
  public:
   Dyadic() = default;  // zero
   explicit Dyadic(double d);  // exact; d must be finite
-  // The two's-complement integer in `limbs` (little-endian, `count` limbs) times 2^exponent.
-  static Dyadic from_twos_complement(const uint64_t* limbs, int count, long exponent);
+  // (negative ? -1 : 1) times the magnitude in `limbs` (little-endian, `count` limbs) times 2^exponent.
+  static Dyadic from_magnitude(const uint64_t* limbs, int count, bool negative, long exponent);
 
   friend Dyadic operator+(const Dyadic& a, const Dyadic& b);
   friend Dyadic operator-(const Dyadic& a, const Dyadic& b);

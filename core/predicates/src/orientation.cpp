@@ -59,6 +59,26 @@ inline double largest_magnitude(T... x) {
   return m;
 }
 
+// Exact-zero fast path, tried only after the filter failed: a determinant with two equal points
+// among its arguments is exactly zero (orient: two equal rows p_i - p_n, or a zero row; insphere: the
+// same rows with equal lifts). A purely combinatorial test on the coordinates (== on doubles is exact),
+// so no tolerance; it spares the exact stage the commonest exact zero of the sweeps — a face tested
+// against one of its own vertices (the sweep sphere's seed vertices are input vertices).
+// Non-finite input is left to the exact stage, which reports it.
+template <std::size_t N>
+inline bool has_equal_points(const std::array<const double*, N>& p, int dim) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (int k = 0; k < dim; ++k)
+      if (!std::isfinite(p[i][k])) return false;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j) {
+      bool equal = true;
+      for (int k = 0; k < dim && equal; ++k) equal = p[i][k] == p[j][k];
+      if (equal) return true;
+    }
+  return false;
+}
+
 inline bool admissible(double max_abs_difference) {
   return max_abs_difference <= detail::kMaxFilteredDifference;  // false for NaN/inf too
 }
@@ -77,7 +97,18 @@ Sign orient2(const Coords<3>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
+  if (has_equal_points(p, 2)) return detail::count_filtered(), Sign::Zero;
   return detail::exact_sign(OrientFormula<2>{p});
+}
+
+// The stages after a failed filter, out of line so the filters stay small where they are inlined.
+[[gnu::noinline]] Sign orient3_exact(const Coords<4>& p) {
+  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
+  return detail::exact_sign(OrientFormula<3>{p});
+}
+[[gnu::noinline]] Sign insphere3_exact(const Coords<5>& p) {
+  if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
+  return detail::exact_sign(InsphereFormula<3>{p});
 }
 
 Sign orient3(const Coords<4>& p) {
@@ -102,7 +133,7 @@ Sign orient3(const Coords<4>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  return detail::exact_sign(OrientFormula<3>{p});
+  return orient3_exact(p);
 }
 
 Sign insphere3(const Coords<5>& p) {
@@ -136,7 +167,7 @@ Sign insphere3(const Coords<5>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  return detail::exact_sign(InsphereFormula<3>{p});
+  return insphere3_exact(p);
 }
 
 }  // namespace

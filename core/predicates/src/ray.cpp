@@ -1,6 +1,8 @@
 // Paper §3, "drop face": the ray test and the order of strikes along the ray.
 #include "sweepcdt/predicates/ray.h"
 
+#include <cmath>
+
 #include "arith.h"
 #include "sweepcdt/predicates/orientation.h"
 
@@ -9,13 +11,17 @@ namespace sweepcdt::predicates {
 template <int D>
 Coords<D + 1> with_point(const Coords<D>& f, const double* p);  // sweep_sides.cpp
 
+// The ray strikes f iff f lies behind every other facet g_i of conv(f ∪ v) (g_i = f with f_i
+// replaced by v). orient(g_i, f_i) is orient(f, v) with rows i and D swapped, i.e. -o: so f_i is
+// behind g_i iff behind_sign(g_i) = -o, one orientation per facet instead of side_of()'s two.
 template <int D, class Sweep>
 bool ray_hits(const Sweep& sweep, const double* v, const Coords<D>& f) {
-  if (orient<D>(with_point<D>(f, v)) == Sign::Zero) return false;  // conv(f ∪ v) degenerate
+  const Sign o = orient<D>(with_point<D>(f, v));
+  if (o == Sign::Zero) return false;  // conv(f ∪ v) degenerate
   for (int i = 0; i < D; ++i) {
     Coords<D> g = f;  // the hyperface of conv(f ∪ v) opposite f_i
     g[i] = v;
-    if (side_of<D>(sweep, g, f[i]) != Side::Behind) return false;
+    if (behind_sign<D>(sweep, g) != -o) return false;
   }
   return true;
 }
@@ -47,6 +53,20 @@ Sign direction_sign(const Sweep& sweep, const double* v, const Coords<D>& f) {
   return Sign::Zero;
 }
 
+// Does f have a vertex at x? Then orient(f, x) = 0 exactly and, on the sphere, g_j = -o for
+// x = Delta_j, so for two such faces the delta^j coefficient o2 g1_j - o1 g2_j = -o2 o1 + o1 o2 is
+// identically zero: every ray toward a seed vertex Delta_0 strikes all faces around Delta_0 at t = 1,
+// and the exact stage would evaluate that zero for each pair (an exact-zero fast path, no tolerance).
+template <int D>
+bool has_point(const Coords<D>& f, const double* x) {
+  for (int i = 0; i < D; ++i) {
+    bool equal = true;
+    for (int k = 0; k < D && equal; ++k) equal = f[i][k] == x[k] && std::isfinite(x[k]);
+    if (equal) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 // t1 - t2 = (o2 g1 - o1 g2) / (g1 g2): the sign of the numerator is that of its first non-zero
@@ -57,6 +77,8 @@ Sign compare_hits(const Sweep& sweep, const double* v, const Coords<D>& f1, cons
   if (g1 == Sign::Zero || g2 == Sign::Zero) return Sign::Zero;  // a face parallel to every direction
   const int terms = std::is_same_v<Sweep, PlaneSweep> ? D : D + 1;
   for (int j = 0; j < terms; ++j) {
+    if constexpr (!std::is_same_v<Sweep, PlaneSweep>)
+      if (has_point<D>(f1, sweep.delta[j]) && has_point<D>(f2, sweep.delta[j])) continue;  // term j is 0
     const Sign n = detail::filtered_sign([&](auto& a) {
       const auto o1 = detail::orient_det<D>(a, with_point<D>(f1, v));
       const auto o2 = detail::orient_det<D>(a, with_point<D>(f2, v));

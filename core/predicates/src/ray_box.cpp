@@ -4,6 +4,8 @@
 //   a/b < c/e  <=>  sign(a e - c b) * sign(b e) < 0,  a 2x2 determinant of coordinate differences.
 #include "sweepcdt/predicates/ray_box.h"
 
+#include <cmath>
+
 #include "arith.h"
 
 namespace sweepcdt::predicates {
@@ -23,11 +25,36 @@ struct Ratio {
   double bound, vk, target;
 };
 
-// sign(p - q) for two slab parameters with positive denominators after orientation.
-Sign compare(const Ratio& p, const Ratio& q) {
-  const Sign num = detail::filtered_sign([&](auto& a) {
+// The numerator x1 y2 - x2 y1 of p - q, x1 = p.bound - p.vk, y2 = q.target - q.vk,
+// x2 = q.bound - q.vk, y1 = p.target - p.vk: a 2x2 determinant of coordinate differences.
+// Filter: the same rounding count as orient2 (orientation.cpp, approx.h): differences 1, products
+// 1 + 1 + 1 = 3, the subtraction 4, so |computed - exact| <= 2 * 4 u (|x1 y2| + |x2 y1|) (with the
+// margin approx.h derives for the rounding of the bound itself), plus the underflow term, for
+// differences of at most 2^64 in magnitude (which also excludes NaN and infinities).
+constexpr double kRatioBound = 2.0 * 4 * detail::kUnitRoundoff;
+
+Sign numerator_sign(const Ratio& p, const Ratio& q) {
+  const double x1 = p.bound - p.vk, y2 = q.target - q.vk, x2 = q.bound - q.vk, y1 = p.target - p.vk;
+  const double left = x1 * y2, right = x2 * y1;
+  const double det = left - right;
+  constexpr double kMax = detail::kMaxFilteredDifference;
+  if (std::fabs(x1) <= kMax && std::fabs(y2) <= kMax && std::fabs(x2) <= kMax && std::fabs(y1) <= kMax) {  // not NaN/inf
+    const double bound = kRatioBound * (std::fabs(left) + std::fabs(right)) + detail::kUnderflowAbsoluteBound;
+    if (det > bound) return detail::count_filtered(), Sign::Positive;
+    if (det < -bound) return detail::count_filtered(), Sign::Negative;
+    // Exact-zero fast path: a difference of two finite doubles rounds to zero only if it is zero
+    // (gradual underflow), so a zero factor in each product makes the exact value 0. The commonest
+    // tie here: a box side through the ray's origin v (v is a vertex of the face in the box).
+    if ((x1 == 0 || y2 == 0) && (x2 == 0 || y1 == 0)) return detail::count_filtered(), Sign::Zero;
+  }
+  return detail::exact_sign([&](auto& a) {
     return a.diff(p.bound, p.vk) * a.diff(q.target, q.vk) - a.diff(q.bound, q.vk) * a.diff(p.target, p.vk);
   });
+}
+
+// sign(p - q) for two slab parameters with positive denominators after orientation.
+Sign compare(const Ratio& p, const Ratio& q) {
+  const Sign num = numerator_sign(p, q);
   const Sign den_p = p.target > p.vk ? Sign::Positive : Sign::Negative;
   const Sign den_q = q.target > q.vk ? Sign::Positive : Sign::Negative;
   return num * den_p * den_q;

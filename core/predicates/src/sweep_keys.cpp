@@ -57,22 +57,39 @@ struct CircumcenterDifference {
 };
 
 // Coefficient of eps_v in N_k: the column b' holds -eps_{p_i} in row i and +eps_{p_D} in every row.
-template <int D>
-Dyadic eps_coefficient_of_nk(const Lifted<D, ExactArith>& l, const Vertices<D + 1>& s, int k, uint32_t v) {
-  const Dyadic one(1.0), zero;
-  std::array<Dyadic, D> column;
+template <int D, class Arith>
+typename Arith::T eps_coefficient_of_nk(Arith& arith, const Lifted<D, Arith>& l, const Vertices<D + 1>& s, int k,
+                                        uint32_t v) {
+  using T = typename Arith::T;
+  std::array<T, D> column;
   if (s[D].id == v) {
-    column.fill(one);
+    column.fill(arith.one());
     return detail::determinant<D>(l.with_column(k, column));
   }
   for (int i = 0; i < D; ++i) {
     if (s[i].id != v) continue;
-    column.fill(zero);
-    column[i] = one;
+    column.fill(T{});
+    column[i] = arith.one();
     return -detail::determinant<D>(l.with_column(k, column));
   }
-  return zero;
+  return T{};
 }
+
+// The coefficient of eps_v in 2 det A_s det A_t (c_k(s) - c_k(t)) (CircumcenterDifference), a formula
+// of degree 2D - 1 in the coordinate differences (homogeneous: the constants are the unit columns),
+// so it runs through the filter and the fixed-width exact stage like any other.
+template <int D>
+struct CircumcenterEpsCoefficient {
+  const Vertices<D + 1>& s;
+  const Vertices<D + 1>& t;
+  int k;
+  uint32_t v;
+  template <class Arith>
+  typename Arith::T operator()(Arith& a) const {
+    const Lifted<D, Arith> ls(a, s), lt(a, t);
+    return eps_coefficient_of_nk<D>(a, ls, s, k, v) * lt.det - eps_coefficient_of_nk<D>(a, lt, t, k, v) * ls.det;
+  }
+};
 
 template <int D>
 std::vector<uint32_t> ids_ascending(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
@@ -126,21 +143,37 @@ struct PowerDifference {
   }
 };
 
-template <int D>
-Dyadic lift_cofactor(const Vertices<D + 1>& s, const Vertex& q, uint32_t v) {
+template <int D, class Arith>
+typename Arith::T lift_cofactor(Arith& arith, const Vertices<D + 1>& s, const Vertex& q, uint32_t v) {
+  using T = typename Arith::T;
   for (int i = 0; i <= D; ++i) {
     if (s[i].id != v) continue;
-    std::array<Dyadic, D * D> m;
+    std::array<T, D * D> m;
     for (int j = 0, r = 0; j <= D; ++j) {
       if (j == i) continue;
-      for (int k = 0; k < D; ++k) m[r * D + k] = ExactArith::diff(s[j].x[k], q.x[k]);
+      for (int k = 0; k < D; ++k) m[r * D + k] = arith.diff(s[j].x[k], q.x[k]);
       ++r;
     }
-    const Dyadic minor = detail::determinant<D>(m);
+    const T minor = detail::determinant<D>(m);
     return ((i + D) & 1) ? -minor : minor;
   }
-  return Dyadic();
+  return T{};
 }
+
+// The coefficient of eps_v in L_t Ds - L_s Dt (PowerDifference): homogeneous of degree 2D.
+template <int D>
+struct PowerEpsCoefficient {
+  const Vertices<D + 1>& s;
+  const Vertices<D + 1>& t;
+  const Vertex& q;
+  uint32_t v;
+  template <class Arith>
+  typename Arith::T operator()(Arith& a) const {
+    const auto ds = detail::orient_det<D>(a, coords_of(s));
+    const auto dt = detail::orient_det<D>(a, coords_of(t));
+    return lift_cofactor<D>(a, s, q, v) * dt - lift_cofactor<D>(a, t, q, v) * ds;
+  }
+};
 
 // An enclosure of num / den from filtered values: |num - num^| <= e_num, |den - den^| <= e_den gives
 // |num/den - q^| <= (e_num + |q^| e_den) / (|den^| - e_den) + the rounding of q^ (see approx.h for
@@ -207,11 +240,9 @@ Sign compare_circumcenters(const Vertices<D + 1>& s, const Vertices<D + 1>& t) {
     detail::count_perturbed();
     if (!tie_checked && cospherical_tie<D>(s, t)) detail::count_tie();
     tie_checked = true;
-    ExactArith exact;
-    const Lifted<D, ExactArith> ls(exact, s), lt(exact, t);
     for (const uint32_t v : ids_ascending<D>(s, t)) {
-      const Dyadic c = eps_coefficient_of_nk<D>(ls, s, k, v) * lt.det - eps_coefficient_of_nk<D>(lt, t, k, v) * ls.det;
-      if (c.sign() != 0) return detail::sign_of(c) * sigma;
+      const Sign c = detail::filtered_sign(CircumcenterEpsCoefficient<D>{s, t, k, v});
+      if (c != Sign::Zero) return c * sigma;
     }
   }
   return Sign::Zero;
@@ -227,13 +258,9 @@ Sign power_difference(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const 
 template <int D>
 Sign power_difference_perturbed(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex& q) {
   detail::count_perturbed();
-  ExactArith exact;
-  const Dyadic ds = detail::orient_det<D>(exact, coords_of(s));
-  const Dyadic dt = detail::orient_det<D>(exact, coords_of(t));
   for (const uint32_t v : ids_ascending<D>(s, t)) {
-    // coefficient of eps_v in L_t Ds - L_s Dt
-    const Dyadic c = lift_cofactor<D>(s, q, v) * dt - lift_cofactor<D>(t, q, v) * ds;
-    if (c.sign() != 0) return detail::sign_of(c);
+    const Sign c = detail::filtered_sign(PowerEpsCoefficient<D>{s, t, q, v});
+    if (c != Sign::Zero) return c;
   }
   return Sign::Zero;
 }

@@ -1,6 +1,9 @@
-// WideInt<L>: a signed integer of L 64-bit limbs in two's complement, with wrap-around +, -, *.
-// Wrap-around arithmetic is exact whenever the true result fits in 64 L - 1 bits; the exact stage
-// of the predicates (arith.h) only uses it after proving that bound for the whole formula.
+// WideInt<L>: a signed integer of at most L 64-bit limbs in sign-magnitude form, with +, -, *.
+// The arithmetic is exact whenever every magnitude fits in L limbs; the exact stage of the
+// predicates (arith.h) only uses it after proving that bound (below 2^(64 L - 1)) for the whole
+// formula. Only the `size` low limbs of a magnitude are significant, so a product costs
+// size(a) * size(b) limb products, not L^2: the values of a predicate are mostly far below the
+// bound that chose L (the differences of a degenerate input are small, or zero).
 // No heap allocation: this is what makes exactly degenerate inputs (coplanar CAD faces, grids,
 // cospherical points) fast.
 #pragma once
@@ -11,55 +14,116 @@ namespace sweepcdt::predicates::detail {
 
 template <int L>
 struct WideInt {
-  std::array<uint64_t, L> limb{};  // little-endian
+  std::array<uint64_t, L> mag;  // little-endian magnitude; limbs at and above `size` are not read
+  int size = 0;                 // significant limbs: mag[size - 1] != 0, or size == 0 for zero
+  bool negative = false;        // never set for zero
+
+  WideInt() = default;
 
   static WideInt from_int64(int64_t v) {
     WideInt r;
-    r.limb[0] = static_cast<uint64_t>(v);
-    for (int i = 1; i < L; ++i) r.limb[i] = v < 0 ? ~uint64_t{0} : 0;
+    if (v == 0) return r;
+    r.negative = v < 0;
+    r.mag[0] = r.negative ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
+    r.size = 1;
     return r;
   }
 
-  friend WideInt operator+(const WideInt& a, const WideInt& b) {
-    WideInt r;
-    unsigned __int128 carry = 0;
-    for (int i = 0; i < L; ++i) {
-      carry += static_cast<unsigned __int128>(a.limb[i]) + b.limb[i];
-      r.limb[i] = static_cast<uint64_t>(carry);
-      carry >>= 64;
-    }
-    return r;
-  }
-  WideInt operator-() const {
-    WideInt r;
-    unsigned __int128 carry = 1;  // ~x + 1
-    for (int i = 0; i < L; ++i) {
-      carry += static_cast<uint64_t>(~limb[i]);
-      r.limb[i] = static_cast<uint64_t>(carry);
-      carry >>= 64;
-    }
-    return r;
-  }
-  friend WideInt operator-(const WideInt& a, const WideInt& b) { return a + (-b); }
-  friend WideInt operator*(const WideInt& a, const WideInt& b) {
-    WideInt r;
-    for (int i = 0; i < L; ++i) {
-      if (a.limb[i] == 0) continue;
-      unsigned __int128 carry = 0;
-      for (int j = 0; i + j < L; ++j) {
-        carry += static_cast<unsigned __int128>(a.limb[i]) * b.limb[j] + r.limb[i + j];
-        r.limb[i + j] = static_cast<uint64_t>(carry);
-        carry >>= 64;
-      }
-    }
-    return r;
-  }
-  int sign() const {
-    if (limb[L - 1] >> 63) return -1;
-    for (uint64_t x : limb)
-      if (x) return 1;
+  // |a| vs |b|: -1, 0, +1.
+  static int compare_magnitude(const WideInt& a, const WideInt& b) {
+    if (a.size != b.size) return a.size < b.size ? -1 : 1;
+    for (int i = a.size - 1; i >= 0; --i)
+      if (a.mag[i] != b.mag[i]) return a.mag[i] < b.mag[i] ? -1 : 1;
     return 0;
   }
+  // |a| + |b| with the given sign.
+  static WideInt add_magnitudes(const WideInt& a, const WideInt& b, bool negative) {
+    const WideInt& big = a.size >= b.size ? a : b;
+    const WideInt& small = a.size >= b.size ? b : a;
+    WideInt r;
+    uint64_t carry = 0;
+    int i = 0;
+    for (; i < small.size; ++i) {
+      const unsigned __int128 s = static_cast<unsigned __int128>(big.mag[i]) + small.mag[i] + carry;
+      r.mag[i] = static_cast<uint64_t>(s);
+      carry = static_cast<uint64_t>(s >> 64);
+    }
+    for (; i < big.size; ++i) {
+      const unsigned __int128 s = static_cast<unsigned __int128>(big.mag[i]) + carry;
+      r.mag[i] = static_cast<uint64_t>(s);
+      carry = static_cast<uint64_t>(s >> 64);
+    }
+    r.size = big.size;
+    if (carry && r.size < L) r.mag[r.size++] = carry;  // r.size == L: beyond the proven bound, not reached
+    r.negative = negative && r.size != 0;
+    return r;
+  }
+  // |big| - |small| (|big| >= |small|) with the given sign.
+  static WideInt subtract_magnitudes(const WideInt& big, const WideInt& small, bool negative) {
+    WideInt r;
+    uint64_t borrow = 0;
+    int i = 0;
+    for (; i < small.size; ++i) {
+      const uint64_t x = big.mag[i], y = small.mag[i];
+      const uint64_t d = x - y - borrow;
+      borrow = (x < y) || (x - y < borrow) ? 1 : 0;
+      r.mag[i] = d;
+    }
+    for (; i < big.size; ++i) {
+      const uint64_t x = big.mag[i];
+      r.mag[i] = x - borrow;
+      borrow = x < borrow ? 1 : 0;
+    }
+    int n = big.size;
+    while (n > 0 && r.mag[n - 1] == 0) --n;
+    r.size = n;
+    r.negative = negative && n != 0;
+    return r;
+  }
+  // a + (b with its sign flipped when `flip`).
+  static WideInt signed_sum(const WideInt& a, const WideInt& b, bool flip) {
+    const bool b_negative = b.negative != flip;
+    if (b.size == 0) return a;
+    if (a.size == 0) {
+      WideInt r = b;
+      r.negative = b_negative;
+      return r;
+    }
+    if (a.negative == b_negative) return add_magnitudes(a, b, a.negative);
+    const int c = compare_magnitude(a, b);
+    if (c == 0) return WideInt();
+    return c > 0 ? subtract_magnitudes(a, b, a.negative) : subtract_magnitudes(b, a, b_negative);
+  }
+
+  friend WideInt operator+(const WideInt& a, const WideInt& b) { return signed_sum(a, b, false); }
+  friend WideInt operator-(const WideInt& a, const WideInt& b) { return signed_sum(a, b, true); }
+  WideInt operator-() const {
+    WideInt r = *this;
+    r.negative = size != 0 && !negative;
+    return r;
+  }
+  friend WideInt operator*(const WideInt& a, const WideInt& b) {
+    WideInt r;
+    if (a.size == 0 || b.size == 0) return r;
+    const int n = a.size + b.size < L ? a.size + b.size : L;  // the proven bound keeps the product in L limbs
+    for (int k = 0; k < n; ++k) r.mag[k] = 0;
+    for (int i = 0; i < a.size; ++i) {
+      unsigned __int128 carry = 0;
+      int j = 0;
+      for (; j < b.size && i + j < n; ++j) {
+        carry += static_cast<unsigned __int128>(a.mag[i]) * b.mag[j] + r.mag[i + j];
+        r.mag[i + j] = static_cast<uint64_t>(carry);
+        carry >>= 64;
+      }
+      if (i + j < n) r.mag[i + j] = static_cast<uint64_t>(carry);
+    }
+    int size = n;
+    while (size > 0 && r.mag[size - 1] == 0) --size;
+    r.size = size;
+    r.negative = size != 0 && (a.negative != b.negative);
+    return r;
+  }
+  int sign() const { return size == 0 ? 0 : (negative ? -1 : 1); }
 };
 
 }  // namespace sweepcdt::predicates::detail

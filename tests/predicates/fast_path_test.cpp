@@ -1,0 +1,144 @@
+// The exact-zero fast paths of the predicates (orientation.cpp: equal points; ray_box.cpp: a zero
+// factor in both products of the slab comparison) and the sign-magnitude fixed-width exact stage
+// (wide_int.h), against the rational reference, on inputs built to hit them and to sit just beside
+// them: exact zeros, 1-ulp neighbours, huge, tiny and subnormal magnitudes.
+#include <cmath>
+#include <limits>
+
+#include "predicate_test_util.h"
+#include "sweepcdt/predicates/ray_box.h"
+
+namespace {
+
+using namespace sweepcdt::testutil;
+namespace ref = sweepcdt::ref;
+using pr::Sign;
+
+// Scales that keep every difference admissible to the filters (<= 2^64) or push it to the exact
+// stage, and tiny ones whose products underflow.
+constexpr double kScales[] = {1.0, 0x1p-30, 0x1p40, 0x1p-1000, 0x1p-1060, 0x1p900, 3.0e-310};
+
+template <int D>
+Point<D> scaled(const Point<D>& p, double s) {
+  Point<D> q;
+  for (int k = 0; k < D; ++k) q[k] = p[k] * s;
+  return q;
+}
+
+template <int D>
+void check_orient_insphere(const std::array<Point<D>, D + 2>& pts, FailureBudget& budget, int& zeros) {
+  pr::Coords<D + 2> all;
+  for (int i = 0; i < D + 2; ++i) all[i] = pts[i].data();
+  pr::Coords<D + 1> simplex;
+  std::copy(all.begin(), all.begin() + D + 1, simplex.begin());
+  const auto v = vecs<D>(all);
+  const int eo = ref::orient({v.begin(), v.begin() + D + 1});
+  const int ei = ref::insphere(v);
+  zeros += eo == 0 || ei == 0;
+  if (pr::to_int(pr::orient<D>(simplex)) != eo && budget.fail())
+    ADD_FAILURE() << "orient<" << D << "> expected " << sign_name(eo) << "\n" << dump<D>(simplex);
+  if (pr::to_int(pr::insphere<D>(all)) != ei && budget.fail())
+    ADD_FAILURE() << "insphere<" << D << "> expected " << sign_name(ei) << "\n" << dump<D>(all);
+}
+
+// Random points with one copied onto another (an exact zero the fast path decides), or the copy
+// moved by one ulp in one coordinate (not zero: the exact stage decides), at every scale.
+template <int D>
+void equal_points_case() {
+  Rng rng(0xfa570000 + D);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  for (int n = 0; n < 600; ++n) {
+    std::array<Point<D>, D + 2> pts;
+    for (auto& p : pts) p = n % 2 ? random_point<D>(rng) : grid_point<D>(rng, -4, 4);
+    const int i = uniform_int(rng, 0, D + 1), j = (i + uniform_int(rng, 1, D + 1)) % (D + 2);
+    pts[j] = pts[i];
+    const int mode = n % 3;  // 0: equal, 1: one ulp up, 2: one ulp down
+    const int k = uniform_int(rng, 0, D - 1);
+    const double s = kScales[n % std::size(kScales)];
+    for (auto& p : pts) p = scaled<D>(p, s);
+    if (mode != 0)
+      pts[j][k] = std::nextafter(pts[j][k], mode == 1 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+    check_orient_insphere<D>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 4) << "too few exact zeros: " << zeros << " of " << cases;
+}
+
+TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
+TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
+
+// Non-finite input is not an exact zero: the exact stage still reports it.
+TEST(FastPath, EqualNonFinitePointsAreNotZero) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Point<3> a{inf, 0, 0}, b{0, 1, 0}, c{0, 0, 1};
+  const pr::Coords<4> p{a.data(), a.data(), b.data(), c.data()};
+  EXPECT_ANY_THROW(pr::orient<3>(p));
+}
+
+// ray_meets_box on the sphere against an exact slab test: x(t) = v + t (Delta_0 - v); the box is
+// met iff on every axis with d_k = 0, lo_k <= v_k <= hi_k, and the latest entry <= the earliest exit
+// with the exit at t >= 0.
+template <int D>
+bool reference_meets(const double* v, const double* target, const double* lo, const double* hi) {
+  bool have = false;
+  ref::Q entry, exit;
+  for (int k = 0; k < D; ++k) {
+    const ref::Q vk = ref::exact(v[k]), d = ref::exact(target[k]) - vk;
+    if (ref::sign(d) == 0) {
+      if (v[k] < lo[k] || v[k] > hi[k]) return false;
+      continue;
+    }
+    ref::Q a = (ref::exact(lo[k]) - vk) / d, b = (ref::exact(hi[k]) - vk) / d;
+    if (b < a) std::swap(a, b);
+    if (!have || a > entry) entry = a;
+    if (!have || b < exit) exit = b;
+    have = true;
+  }
+  return !have || (ref::sign(exit) >= 0 && entry <= exit);
+}
+
+template <int D>
+void ray_box_case() {
+  Rng rng(0xfa571000 + D);
+  FailureBudget budget;
+  int met = 0, missed = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const double s = kScales[n % std::size(kScales)];
+    std::array<Point<D>, D + 1> seed;
+    pr::Coords<D + 1> delta;
+    for (int j = 0; j <= D; ++j) {
+      seed[j] = scaled<D>(grid_point<D>(rng, -3, 3), s);
+      delta[j] = seed[j].data();
+    }
+    Point<D> v = scaled<D>(grid_point<D>(rng, -3, 3), s);
+    Point<D> lo = scaled<D>(grid_point<D>(rng, -3, 3), s), hi = lo;
+    for (int k = 0; k < D; ++k) {
+      hi[k] = lo[k] + s * uniform_int(rng, 0, 3);
+      // Box sides through v (the face in the box has v as a vertex) or through Delta_0, or 1 ulp off.
+      const int r = uniform_int(rng, 0, 5);
+      if (r == 0) lo[k] = v[k];
+      if (r == 1) hi[k] = v[k];
+      if (r == 2) lo[k] = seed[0][k];
+      if (r == 3) lo[k] = std::nextafter(v[k], -INFINITY), hi[k] = std::max(hi[k], lo[k]);
+      if (hi[k] < lo[k]) std::swap(lo[k], hi[k]);
+    }
+    const bool expected = reference_meets<D>(v.data(), seed[0].data(), lo.data(), hi.data());
+    const bool got = pr::ray_meets_box<D>(pr::SphereSweep<D>{delta}, v.data(), lo.data(), hi.data());
+    (expected ? met : missed)++;
+    if (got != expected && budget.fail())
+      ADD_FAILURE() << "ray_meets_box<" << D << "> expected " << expected << "\n" << dump_point<D>("v", v.data())
+                    << dump_point<D>("delta0", seed[0].data()) << dump_point<D>("lo", lo.data())
+                    << dump_point<D>("hi", hi.data());
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(met, 200);
+  EXPECT_GT(missed, 200);
+}
+
+TEST(FastPath, RayMeetsBoxSphere2) { ray_box_case<2>(); }
+TEST(FastPath, RayMeetsBoxSphere3) { ray_box_case<3>(); }
+TEST(FastPath, RayMeetsBoxSphere4) { ray_box_case<4>(); }
+
+}  // namespace
