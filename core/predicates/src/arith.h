@@ -67,14 +67,14 @@ struct ScanArith {
   int lowest_bit = std::numeric_limits<int>::max();   // exponent of the lowest set bit of any input
   int highest_bit = std::numeric_limits<int>::min();  // exponent of the highest set bit of any input
   bool finite = true;
-  void see(double x) {
+  [[gnu::always_inline]] void see(double x) {
     finite = finite && std::isfinite(x);
     const Decomposed d = decompose(x);
     if (d.mantissa == 0) return;
     lowest_bit = std::min(lowest_bit, d.exponent + std::countr_zero(d.mantissa));
     highest_bit = std::max(highest_bit, d.exponent + 63 - std::countl_zero(d.mantissa));
   }
-  T diff(double a, double b) {
+  [[gnu::always_inline]] T diff(double a, double b) {
     see(a);
     see(b);
     return {1, 0};
@@ -87,14 +87,14 @@ template <int L>
 struct WideArith {
   using T = WideInt<L>;
   int lowest_bit;
-  int64_t scaled(double x) const {
+  [[gnu::always_inline]] int64_t scaled(double x) const {
     const Decomposed d = decompose(x);
     if (d.mantissa == 0) return 0;  // a zero's exponent is arbitrary: no shift (it could exceed 63)
     const int shift = d.exponent - lowest_bit;  // >= -(trailing zeros of the mantissa): exact
     const auto magnitude = static_cast<int64_t>(shift >= 0 ? d.mantissa << shift : d.mantissa >> -shift);
     return d.negative ? -magnitude : magnitude;
   }
-  T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
+  [[gnu::always_inline]] T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
   static T one() { return T::from_int64(1); }  // unscaled: homogeneous formulas only
 };
 

@@ -20,7 +20,7 @@ struct WideInt {
 
   WideInt() = default;
 
-  static WideInt from_int64(int64_t v) {
+  [[gnu::always_inline]] static WideInt from_int64(int64_t v) {
     WideInt r;
     if (v == 0) return r;
     r.negative = v < 0;
@@ -37,7 +37,7 @@ struct WideInt {
     return 0;
   }
   // |a| + |b| with the given sign.
-  static WideInt add_magnitudes(const WideInt& a, const WideInt& b, bool negative) {
+  [[gnu::always_inline]] static WideInt add_magnitudes(const WideInt& a, const WideInt& b, bool negative) {
     const WideInt& big = a.size >= b.size ? a : b;
     const WideInt& small = a.size >= b.size ? b : a;
     WideInt r;
@@ -59,7 +59,7 @@ struct WideInt {
     return r;
   }
   // |big| - |small| (|big| >= |small|) with the given sign.
-  static WideInt subtract_magnitudes(const WideInt& big, const WideInt& small, bool negative) {
+  [[gnu::always_inline]] static WideInt subtract_magnitudes(const WideInt& big, const WideInt& small, bool negative) {
     WideInt r;
     uint64_t borrow = 0;
     int i = 0;
@@ -81,7 +81,7 @@ struct WideInt {
     return r;
   }
   // a + (b with its sign flipped when `flip`).
-  static WideInt signed_sum(const WideInt& a, const WideInt& b, bool flip) {
+  [[gnu::always_inline]] static WideInt signed_sum(const WideInt& a, const WideInt& b, bool flip) {
     const bool b_negative = b.negative != flip;
     if (b.size == 0) return a;
     if (a.size == 0) {
@@ -95,14 +95,14 @@ struct WideInt {
     return c > 0 ? subtract_magnitudes(a, b, a.negative) : subtract_magnitudes(b, a, b_negative);
   }
 
-  friend WideInt operator+(const WideInt& a, const WideInt& b) { return signed_sum(a, b, false); }
-  friend WideInt operator-(const WideInt& a, const WideInt& b) { return signed_sum(a, b, true); }
+  [[gnu::always_inline]] friend WideInt operator+(const WideInt& a, const WideInt& b) { return signed_sum(a, b, false); }
+  [[gnu::always_inline]] friend WideInt operator-(const WideInt& a, const WideInt& b) { return signed_sum(a, b, true); }
   WideInt operator-() const {
     WideInt r = *this;
     r.negative = size != 0 && !negative;
     return r;
   }
-  friend WideInt operator*(const WideInt& a, const WideInt& b) {
+  [[gnu::always_inline]] friend WideInt operator*(const WideInt& a, const WideInt& b) {
     WideInt r;
     if (a.size == 0 || b.size == 0) return r;
     const int n = a.size + b.size < L ? a.size + b.size : L;  // the proven bound keeps the product in L limbs
