@@ -27,12 +27,13 @@ def face_at_x(shape, x):
 
 
 class CalculiX(unittest.TestCase):
-    def test_static_analysis_gives_finite_displacements(self):
-        doc = FreeCAD.newDocument("SweepCDTCcx")
+    def fixed_block_analysis(self, name):
+        """A document with the block, an analysis with the CalculiX solver, steel and the face at
+        x = 0 fixed: what both tests load in their own way."""
+        doc = FreeCAD.newDocument(name)
         part = doc.addObject("Part::Feature", "Block")
         part.Shape = block_with_holes_and_fillet()
         doc.recompute()
-
         analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
         solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiXccxTools")
         solver.AnalysisType = "static"
@@ -41,14 +42,27 @@ class CalculiX(unittest.TestCase):
         analysis.addObject(solver)
         material = ObjectsFem.makeMaterialSolid(doc, "Steel")
         mat = material.Material
-        mat["Name"] = "CalculiX-Steel"
-        mat["YoungsModulus"] = "210000 MPa"
-        mat["PoissonRatio"] = "0.30"
+        mat["Name"], mat["YoungsModulus"], mat["PoissonRatio"] = "CalculiX-Steel", "210000 MPa", "0.30"
         material.Material = mat
         analysis.addObject(material)
         fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
         fixed.References = [(part, face_at_x(part.Shape, 0))]
         analysis.addObject(fixed)
+        return doc, part, analysis, solver
+
+    def ccx_tools(self, analysis, solver):
+        """FreeCAD's ccxtools on the analysis, in a working folder of its own, the input file written."""
+        fea = ccxtools.FemToolsCcx(analysis, solver)
+        fea.update_objects()
+        workdir = tempfile.TemporaryDirectory(prefix="sweepcdt_ccx_")
+        self.addCleanup(workdir.cleanup)
+        fea.setup_working_dir(workdir.name)
+        self.assertEqual(fea.check_prerequisites(), "")
+        fea.write_inp_file()
+        return fea
+
+    def test_static_analysis_gives_finite_displacements(self):
+        doc, part, analysis, solver = self.fixed_block_analysis("SweepCDTCcx")
         force = ObjectsFem.makeConstraintForce(doc, "Force")
         force.References = [(part, face_at_x(part.Shape, 40))]
         force.Force = 10000.0  # N
@@ -61,13 +75,7 @@ class CalculiX(unittest.TestCase):
 
         mesh_obj, result, _ = sweepcdt_femmesh.tetrahedralize_object(part, analysis=analysis, deflection=0.1)
 
-        fea = ccxtools.FemToolsCcx(analysis, solver)
-        fea.update_objects()
-        workdir = tempfile.TemporaryDirectory(prefix="sweepcdt_ccx_")
-        self.addCleanup(workdir.cleanup)
-        fea.setup_working_dir(workdir.name)
-        self.assertEqual(fea.check_prerequisites(), "")
-        fea.write_inp_file()
+        fea = self.ccx_tools(analysis, solver)
         self.assertTrue(os.path.isfile(fea.inp_file_name))
         fea.setup_ccx()
         ret = fea.ccx_run()
@@ -95,35 +103,14 @@ class CalculiX(unittest.TestCase):
     def test_pressure_on_a_face_reaches_the_elements(self):
         # A pressure load needs the mesh's element faces on the CAD face (FreeCAD finds them
         # geometrically, as for its Gmsh meshes): it must appear as *DLOAD and push the end inward.
-        doc = FreeCAD.newDocument("SweepCDTCcxPressure")
-        part = doc.addObject("Part::Feature", "Block")
-        part.Shape = block_with_holes_and_fillet()
-        doc.recompute()
-        analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
-        solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiXccxTools")
-        solver.AnalysisType = "static"
-        analysis.addObject(solver)
-        material = ObjectsFem.makeMaterialSolid(doc, "Steel")
-        mat = material.Material
-        mat["Name"], mat["YoungsModulus"], mat["PoissonRatio"] = "CalculiX-Steel", "210000 MPa", "0.30"
-        material.Material = mat
-        analysis.addObject(material)
-        fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
-        fixed.References = [(part, face_at_x(part.Shape, 0))]
-        analysis.addObject(fixed)
+        doc, part, analysis, solver = self.fixed_block_analysis("SweepCDTCcxPressure")
         pressure = ObjectsFem.makeConstraintPressure(doc, "Pressure")
         pressure.References = [(part, face_at_x(part.Shape, 40))]
         pressure.Pressure = 10.0  # MPa, onto the face
         analysis.addObject(pressure)
         doc.recompute()
         mesh_obj, _, _ = sweepcdt_femmesh.tetrahedralize_object(part, analysis=analysis, deflection=0.1)
-        fea = ccxtools.FemToolsCcx(analysis, solver)
-        fea.update_objects()
-        workdir = tempfile.TemporaryDirectory(prefix="sweepcdt_ccx_")
-        self.addCleanup(workdir.cleanup)
-        fea.setup_working_dir(workdir.name)
-        self.assertEqual(fea.check_prerequisites(), "")
-        fea.write_inp_file()
+        fea = self.ccx_tools(analysis, solver)
         with open(fea.inp_file_name) as f:
             self.assertIn("*DLOAD", f.read())
         fea.setup_ccx()
