@@ -62,7 +62,8 @@ def run_sweepcdt(cli, path, work, extra):
     return {"ok": ok, "seconds": seconds, "peak": peak, "points": points, "message": message}
 
 
-def run_tetgen(off, work, switches, input_points):
+def run_tetgen(work, switches, input_points):
+    """tetgen on work/in.off (the welded surface steiner_bench wrote)."""
     ok, seconds, peak = timed(["tetgen", switches, "in.off"], work)
     node = os.path.join(work, "in.1.node")
     points = None
@@ -120,8 +121,8 @@ def main():
                 continue
             default = median_run(args.repeat, lambda: run_sweepcdt(cli, path, work, []))
             triangles = median_run(args.repeat, lambda: run_sweepcdt(cli, path, work, ["--facets", "triangles"]))
-            pq = median_run(args.repeat, lambda: run_tetgen(path, work, "-pQ", counts["points"]))
-            pqm = median_run(args.repeat, lambda: run_tetgen(path, work, "-pQM", counts["points"]))
+            pq = median_run(args.repeat, lambda: run_tetgen(work, "-pQ", counts["points"]))
+            pqm = median_run(args.repeat, lambda: run_tetgen(work, "-pQM", counts["points"]))
             for key, r in (("default", default), ("triangles", triangles), ("pQ", pq), ("pQM", pqm)):
                 if r["ok"]:
                     totals[key] += r["points"]

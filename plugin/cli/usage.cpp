@@ -113,7 +113,9 @@ std::string cdt_help() {
          "                      .simplices (any dimension), or in 3D any volume format of `mesh`\n"
          "  --format F          node, simplices, or (3D) mesh, vtu, msh, msh22, tetgen, inp\n"
          "  --steiner none|auto none (default): the PLC exactly; auto: Steiner points (3D only)\n"
-         "  --algorithm, --check, --stats, --quiet   as for `mesh`\n"
+         "  --check             validate() the result exactly once more before writing; refuse (exit 6)\n"
+         "                      if not valid\n"
+         "  --algorithm, --stats, --quiet   as for `mesh`\n"
          "\n" +
          exit_codes_text();
 }

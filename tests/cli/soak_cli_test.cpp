@@ -81,6 +81,8 @@ TEST(CliSoak, PerturbedSurfacesEndWithADocumentedOutcome) {
       const CliRun r = run(quoted(surface) + " -o " + quoted(output), dir, 600);
       SCOPED_TRACE(surface.filename().string() + ":\n" + r.out);
       EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3 || r.exit_code == 4) << "exit " << r.exit_code;
+      // Two far-apart copies of a valid surface are valid, and each copy meshes alone: they must mesh.
+      if (kind == "two_bodies") EXPECT_EQ(r.exit_code, 0);
       EXPECT_FALSE(r.says("internal error"));
       if (r.exit_code != 0) {
         EXPECT_FALSE(fs::exists(output));
@@ -93,8 +95,6 @@ TEST(CliSoak, PerturbedSurfacesEndWithADocumentedOutcome) {
     }
   }
   std::printf("  %d meshed and checked, %d invalid input, %d without a CDT within the budget\n", outcomes[0], outcomes[1], outcomes[2]);
-  // Two far-apart copies of a valid surface are valid: those at least must mesh.
-  EXPECT_GE(outcomes[0], static_cast<int>(inputs.size()));
 }
 
 }  // namespace

@@ -20,6 +20,20 @@ pr::Coords<D> coords(const Face<D>& f) {
   return c;
 }
 
+// A seed simplex Delta of random points of the grid [-3, 3]^D, not flat (exactly); `seed` holds the
+// points that `delta` points into.
+template <int D>
+pr::Coords<D + 1> grid_seed(Rng& rng, std::array<Point<D>, D + 1>& seed) {
+  pr::Coords<D + 1> delta;
+  do {
+    for (int j = 0; j <= D; ++j) {
+      seed[j] = grid_point<D>(rng, -3, 3);
+      delta[j] = seed[j].data();
+    }
+  } while (ref::orient(vecs<D>(delta)) == 0);
+  return delta;
+}
+
 enum class RefHit { Miss, Hit, Boundary };
 
 struct RefStrike {
@@ -144,13 +158,7 @@ TYPED_TEST(Ray, SphereSweepOnGrid) {
   RayStats stats;
   for (int round = 0; round < 60; ++round) {
     std::array<Point<D>, D + 1> seed;
-    pr::Coords<D + 1> delta;
-    do {
-      for (int j = 0; j <= D; ++j) {
-        seed[j] = grid_point<D>(rng, -3, 3);
-        delta[j] = seed[j].data();
-      }
-    } while (ref::orient(vecs<D>(delta)) == 0);
+    const pr::Coords<D + 1> delta = grid_seed<D>(rng, seed);
     const pr::SphereSweep<D> sweep{delta};
     // Sometimes v is Delta_0 itself (the ray then heads for Delta_1), or on a line with Delta_0.
     Point<D> v = round % 10 == 0 ? seed[0] : grid_point<D>(rng, -3, 3);
@@ -174,13 +182,7 @@ TYPED_TEST(Ray, SphereSweepFacesThroughSeedVertex) {
   RayStats stats;
   for (int round = 0; round < 80; ++round) {
     std::array<Point<D>, D + 1> seed;
-    pr::Coords<D + 1> delta;
-    do {
-      for (int j = 0; j <= D; ++j) {
-        seed[j] = grid_point<D>(rng, -3, 3);
-        delta[j] = seed[j].data();
-      }
-    } while (ref::orient(vecs<D>(delta)) == 0);
+    const pr::Coords<D + 1> delta = grid_seed<D>(rng, seed);
     const pr::SphereSweep<D> sweep{delta};
     const Point<D> v = grid_point<D>(rng, -3, 3);
     if (v == seed[0]) continue;
