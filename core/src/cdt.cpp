@@ -2,6 +2,7 @@
 // result before returning it: a PLC without a CDT must fail with NoCdtError, never return a wrong
 // triangulation.
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/star_cdt.h"
 
 #include <algorithm>
 #include <chrono>
@@ -62,10 +63,9 @@ Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics&
 }
 
 
-// Triangulates `plc` (already checked) and verifies the result.
+// Pairs the neighbours of the simplices `build` made of `plc`, assigns regions, and verifies them.
 template <int D>
-Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
-  Triangulation<D> tri = build(plc, options, stats, clock);
+Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, CdtStatistics& stats, Stopwatch& clock) {
   stats.seconds_build += clock.lap();
   stats.simplices = tri.num_simplices();
   compute_neighbors(tri);
@@ -77,6 +77,12 @@ Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStati
                          report.failures.front().detail + ")",
                      {});
   return tri;
+}
+
+// Triangulates `plc` (already checked) and verifies the result.
+template <int D>
+Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
+  return finish(build(plc, options, stats, clock), plc, stats, clock);
 }
 
 // One run on a checked PLC, perturbed by vertex id: (Steiner points or coplanar facets,) the
@@ -195,6 +201,22 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options) {
   return cdt(plc, options, static_cast<Plc<D>*>(nullptr));
 }
 
+template <int D>
+Triangulation<D> star_cdt(const Plc<D>& polytope, const std::array<double, D>& centre, const Options& options) {
+  CdtStatistics local;
+  CdtStatistics& stats = options.statistics ? *options.statistics : local;
+  stats = {};
+  stats.perturbation_orders = 1;
+  Stopwatch clock;
+  check(polytope);
+  stats.seconds_check = clock.lap();
+  return finish(detail::star_sweep_cdt<D>(polytope, centre, options, stats), polytope, stats, clock);
+}
+
+template Triangulation<2> star_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&);
+template Triangulation<3> star_cdt<3>(const Plc<3>&, const std::array<double, 3>&, const Options&);
+template Triangulation<4> star_cdt<4>(const Plc<4>&, const std::array<double, 4>&, const Options&);
+template Triangulation<5> star_cdt<5>(const Plc<5>&, const std::array<double, 5>&, const Options&);
 template Triangulation<2> cdt<2>(const Plc<2>&, const Options&);
 template Triangulation<3> cdt<3>(const Plc<3>&, const Options&);
 template Triangulation<4> cdt<4>(const Plc<4>&, const Options&);

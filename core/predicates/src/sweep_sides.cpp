@@ -37,6 +37,15 @@ Sign behind_sign(const SphereSweep<D>& sweep, const Coords<D>& f) {
   throw std::invalid_argument("behind_sign: the seed simplex lies in the face's hyperplane");
 }
 
+template <int D>
+Sign behind_sign(const StarSweep<D>& sweep, const Coords<D>& f) {
+  for (const double* q : sweep.centre) {
+    const Sign o = orient<D>(with_point<D>(f, q));
+    if (o != Sign::Zero) return -o;
+  }
+  throw std::invalid_argument("behind_sign: the star's centre points lie in the face's hyperplane");
+}
+
 template <int D, class Sweep>
 Side side_of(const Sweep& sweep, const Coords<D>& f, const double* p) {
   const Sign o = orient<D>(with_point<D>(f, p));
@@ -49,7 +58,9 @@ Side side_of(const Sweep& sweep, const Coords<D>& f, const double* p) {
   template Sign behind_sign<D>(const PlaneSweep&, const Coords<D>&);                    \
   template Sign behind_sign<D>(const SphereSweep<D>&, const Coords<D>&);                \
   template Side side_of<D, PlaneSweep>(const PlaneSweep&, const Coords<D>&, const double*); \
-  template Side side_of<D, SphereSweep<D>>(const SphereSweep<D>&, const Coords<D>&, const double*);
+  template Sign behind_sign<D>(const StarSweep<D>&, const Coords<D>&);                  \
+  template Side side_of<D, SphereSweep<D>>(const SphereSweep<D>&, const Coords<D>&, const double*); \
+  template Side side_of<D, StarSweep<D>>(const StarSweep<D>&, const Coords<D>&, const double*);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)

@@ -2,6 +2,12 @@
 // and faces with the best vertex of their drop list — wait in a priority queue ordered by
 // circumcentre (plane) or power tuple (sphere), compared exactly (predicates/sweep_keys.h); each one
 // popped that is still valid is constrained Delaunay (Theorem 5) and is built.
+//
+// The star sweep (paper §5) is the same machine run inward: the CDT of a polytope that is
+// star-shaped from a point p, built in decreasing power Psi_p ("s is constructed before t if
+// Psi_p(s) > Psi_p(t)"), with "behind" the side away from p. A ray from a vertex away from p strikes
+// no constraint, so no vertex has a drop face: every simplex is found as a pair of faces at a ridge,
+// and there is no seed.
 #include "../ids_text.h"
 #include "sweep_cdt.h"
 
@@ -50,6 +56,8 @@ int sort_parity(std::array<uint32_t, N> ids) {
 
 template <int D, class Frame>
 class Sweep {
+  static constexpr bool kStar = std::is_same_v<Frame, predicates::StarSweep<D>>;
+
  public:
   Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
         const Options& options, CdtStatistics& stats)
@@ -60,11 +68,12 @@ class Sweep {
     add_constraint_faces();
     if (delta_) add_seed(*delta_);
     link_ridge_lists();
-    assign_drop_faces();
+    if constexpr (!kStar) assign_drop_faces();
     for (uint32_t f = 0; f < faces_.size(); ++f)
       if (!faces_[f].built_front) new_face(f);
     sweep();
     require_domain_sides_built();
+    if constexpr (kStar) require_inner_sides_built();
     return triangulation_of<D>(plc_, std::move(simplices_));
   }
 
@@ -88,6 +97,16 @@ class Sweep {
     for (const Face<D>& f : faces_)
       if (f.constraint != kNone && plc_.exterior_of(f.constraint) != ExteriorSide::None && !(f.built_front && f.built_behind))
         no_cdt("no simplex on the domain side of constraining simplex " + std::to_string(f.constraint) + " " +
+                   ids_text(f.v.data(), D) + ": no constrained Delaunay simplex can be built there",
+               f.v.data(), D);
+  }
+
+  // In a star the constraints without notation lie inside the polytope (a facet through a deleted
+  // vertex): both of their sides are domain.
+  void require_inner_sides_built() const {
+    for (const Face<D>& f : faces_)
+      if (f.constraint != kNone && plc_.exterior_of(f.constraint) == ExteriorSide::None && !(f.built_front && f.built_behind))
+        no_cdt("no simplex on one side of inner constraining simplex " + std::to_string(f.constraint) + " " +
                    ids_text(f.v.data(), D) + ": no constrained Delaunay simplex can be built there",
                f.v.data(), D);
   }
@@ -125,13 +144,26 @@ class Sweep {
     if (sa == sb) return false;
     if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
       return predicates::compare_circumcenters<D>(vertices(a.s), vertices(b.s)) == Sign::Negative;
+    else if constexpr (kStar)  // decreasing power tuples (paper §5)
+      return predicates::compare_power_tuples<D>(vertices(b.s), vertices(a.s), star_centre()) == Sign::Negative;
     else
       return predicates::compare_power_tuples<D>(vertices(a.s), vertices(b.s), vertices(*delta_)) == Sign::Negative;
   }
+  // The star's centre p and its tie-breaking points: no vertices (their lifts cancel in power
+  // comparisons, sweep_keys.h), so no ids.
+  predicates::Vertices<D + 1> star_centre() const {
+    predicates::Vertices<D + 1> v;
+    if constexpr (kStar)
+      for (int i = 0; i <= D; ++i) v[i] = {frame_.centre[i], kNone};
+    return v;
+  }
   predicates::KeyInterval key_interval(const std::array<uint32_t, D + 1>& s) const {
-    if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
+    if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>) {
       return predicates::circumcenter_interval<D>(vertices(s), 0);
-    else
+    } else if constexpr (kStar) {  // decreasing power: the enclosure of -Psi_p
+      const predicates::KeyInterval k = predicates::power_interval<D>(vertices(s), frame_.centre[0]);
+      return {-k.hi, -k.lo};
+    } else
       return predicates::power_interval<D>(vertices(s), point((*delta_)[0]));
   }
   // The face's vertices plus `apex`, positively oriented (apex in front of f: its side is f.front).
@@ -379,7 +411,7 @@ class Sweep {
     }
     for (uint32_t h : fresh)
       for (int i = 0; i < D; ++i) link_into_ridge(h, i);
-    redistribute(s, finished, behind, fresh);
+    if constexpr (!kStar) redistribute(s, finished, behind, fresh);
     for (uint32_t h : fresh) new_face(h);
   }
 
@@ -456,6 +488,26 @@ Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uin
   return Sweep<D, predicates::SphereSweep<D>>(plc, frame, delta, options, stats).run();
 }
 
+template <int D>
+Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
+                                CdtStatistics& stats) {
+  // Ties (faces through the centre p, equal powers) are broken as if p were moved infinitesimally
+  // toward q_1, then q_2, ...: q_k is p with its coordinate k-1 changed, so they are affinely
+  // independent. Any such choice gives the CDT (it is unique under the §6 perturbation).
+  std::array<std::array<double, D>, D + 1> points;
+  points.fill(centre);
+  predicates::StarSweep<D> frame;
+  for (int k = 0; k <= D; ++k) {
+    if (k > 0) points[k][k - 1] = centre[k - 1] == 0 ? 1 : -centre[k - 1];
+    frame.centre[k] = points[k].data();
+  }
+  return Sweep<D, predicates::StarSweep<D>>(plc, frame, std::nullopt, options, stats).run();
+}
+
+template Triangulation<2> star_sweep_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&, CdtStatistics&);
+template Triangulation<3> star_sweep_cdt<3>(const Plc<3>&, const std::array<double, 3>&, const Options&, CdtStatistics&);
+template Triangulation<4> star_sweep_cdt<4>(const Plc<4>&, const std::array<double, 4>&, const Options&, CdtStatistics&);
+template Triangulation<5> star_sweep_cdt<5>(const Plc<5>&, const std::array<double, 5>&, const Options&, CdtStatistics&);
 template Triangulation<2> sweep_cdt<2>(const Plc<2>&, const std::optional<std::array<uint32_t, 3>>&, const Options&, CdtStatistics&);
 template Triangulation<3> sweep_cdt<3>(const Plc<3>&, const std::optional<std::array<uint32_t, 4>>&, const Options&, CdtStatistics&);
 template Triangulation<4> sweep_cdt<4>(const Plc<4>&, const std::optional<std::array<uint32_t, 5>>&, const Options&, CdtStatistics&);

@@ -13,4 +13,10 @@ template <int D>
 Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uint32_t, D + 1>>& delta,
                            const Options& options, CdtStatistics& stats);
 
+// Paper §5: simplices of the CDT of a checked PLC whose notated constraints bound a polytope that is
+// star-shaped from `centre` (sweepcdt/star_cdt.h). Throws NoCdtError, CancelledError.
+template <int D>
+Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
+                                CdtStatistics& stats);
+
 }  // namespace sweepcdt::detail

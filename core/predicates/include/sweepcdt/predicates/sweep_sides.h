@@ -4,7 +4,10 @@
 //   x_1, on the side of (0, -inf, 0, ...), and so on through the axes.
 // Sweep sphere: behind is the side holding Delta_0; if Delta_0 lies in h, the side holding Delta_1,
 //   and so on through the vertices of the seed simplex Delta.
-// Both are stated through orient(f_0..f_{D-1}, p): behind_sign() is the sign that means "behind".
+// Star sweep (paper §5, the CDT of a star-shaped polytope): the sweep runs inward, toward the point p
+//   that sees the whole boundary, so behind is the side NOT holding p; if p lies in h, the side not
+//   holding q_1, and so on (p perturbed toward q_1, q_2, ...: the same tie rule as the sphere's).
+// All are stated through orient(f_0..f_{D-1}, p): behind_sign() is the sign that means "behind".
 #pragma once
 #include "sweepcdt/predicates/sign.h"
 #include "sweepcdt/predicates/vertex.h"
@@ -18,6 +21,11 @@ struct SphereSweep {
   Coords<D + 1> delta;  // the seed simplex Delta_0..Delta_D (non-degenerate)
 };
 
+template <int D>
+struct StarSweep {
+  Coords<D + 1> centre;  // p, then the tie-breaking points q_1..q_D (p, q_1, ..., q_D affinely independent)
+};
+
 enum class Side : int8_t { Behind = -1, On = 0, Front = 1 };
 
 // The sign of orient(f, p) for points p behind f. f must span a hyperplane.
@@ -25,6 +33,9 @@ template <int D>
 Sign behind_sign(const PlaneSweep&, const Coords<D>& f);
 template <int D>
 Sign behind_sign(const SphereSweep<D>& sweep, const Coords<D>& f);
+
+template <int D>
+Sign behind_sign(const StarSweep<D>& sweep, const Coords<D>& f);
 
 template <int D, class Sweep>
 Side side_of(const Sweep& sweep, const Coords<D>& f, const double* p);

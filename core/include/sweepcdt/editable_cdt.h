@@ -1,0 +1,82 @@
+// EditableCdt: a PLC and its CDT kept in step while vertices are deleted (paper §5).
+//
+//   Plc<3> refined;
+//   Triangulation<3> tri = cdt(plc, options, &refined);
+//   EditableCdt<3> mesh(std::move(refined), std::move(tri));
+//   mesh.remove_vertex(17);                  // throws NoCdtError (mesh unchanged) if no CDT remains
+//   EditableCdt<3>::Snapshot now = mesh.snapshot();  // the PLC and CDT without vertex 17
+//
+// Deleting v empties its star, the simplices holding it, and fills the cavity with the CDT of the
+// polytope its link bounds — star-shaped from v — by star_cdt()'s inward sweep (star_cdt.h): time
+// O(star size · log). A vertex may lie
+//   - inside the domain;
+//   - on constraining simplices, when each group of exactly coplanar ones around it (a sheet of a
+//     facet) has v inside it (any D), or, for D = 3, on a straight edge of it with its two
+//     neighbours along that edge (a Steiner point on a segment): the facet without v is then
+//     triangulated anew by the (D-1)-dimensional star CDT of the hole (the paper's recursion),
+//     computed on the facet's projection onto a coordinate hyperplane — exactly the facet's own
+//     CDT when the facet is parallel to that hyperplane, a valid triangulation of it otherwise.
+// Deleting a vertex can leave a PLC without a CDT (paper §5: the algorithm "may not behave in any
+// reasonable manner" then). Every deletion is checked exactly before it is applied — the new
+// simplices must tile the cavity (validate() of the cavity's CDT) and be locally Delaunay with
+// their neighbours outside it, which with the rest of the CDT unchanged makes the whole a CDT — so
+// such a deletion throws NoCdtError, with the vertex ids of the face concerned, and leaves the
+// PLC and the CDT as they were.
+//
+// Vertex ids do not change while editing; snapshot() numbers the remaining ones anew, in the same
+// order, so the perturbation order (§6, and tri.perturbation_rank) stays the same.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt {
+
+// The vertex cannot leave the PLC: not a vertex of the triangulation, or a corner of a facet (it
+// would change the facet's shape), or a case not implemented (a vertex on the boundary of a facet
+// in D = 2 or D >= 4, or on the boundary of a convex-hull domain).
+class VertexRemovalError : public Error {
+ public:
+  using Error::Error;
+};
+
+template <int D>
+class EditableCdt {
+ public:
+  // `tri` must be a CDT of `plc` (as cdt(plc, options, &triangulated) returns it, with
+  // `triangulated` as plc: Steiner points are points of the refined PLC); it is not checked again.
+  EditableCdt(Plc<D> plc, Triangulation<D> tri);
+  EditableCdt(EditableCdt&&) noexcept;
+  EditableCdt& operator=(EditableCdt&&) noexcept;
+  ~EditableCdt();
+
+  // Deletes vertex v from the CDT and from the PLC. Throws NoCdtError (unchanged) when the PLC
+  // without v has no CDT, VertexRemovalError (unchanged) when v cannot be deleted (above).
+  void remove_vertex(uint32_t v);
+
+  bool has_vertex(uint32_t v) const;
+  std::size_t num_vertices() const;   // vertices left
+  std::size_t num_simplices() const;
+
+  struct Snapshot {
+    Plc<D> plc;                     // the PLC now: constraints on deleted vertices replaced
+    Triangulation<D> triangulation; // its CDT, neighbours and regions included
+    std::vector<uint32_t> old_ids;  // per vertex of the snapshot: its id in the EditableCdt
+  };
+  Snapshot snapshot() const;
+
+  // The PLC that remove_vertex(v) would leave — the facets through v triangulated anew as it does —
+  // numbered as snapshot() would then number it. For callers that want to know more than
+  // NoCdtError says, and as the tests' oracle: cdt() of it fails exactly when remove_vertex(v) does.
+  // Throws VertexRemovalError as remove_vertex() does.
+  Plc<D> plc_without(uint32_t v) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sweepcdt

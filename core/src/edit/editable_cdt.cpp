@@ -1,0 +1,472 @@
+// EditableCdt (sweepcdt/editable_cdt.h): vertex deletion by the star CDT of paper §5.
+//
+// The structure is the Triangulation's flat arrays with free slots: simplices and neighbours as in
+// triangulation.h (a deleted simplex has kNone as its first vertex and its slot is reused), one
+// simplex per vertex to start walks from, and the constraints with a per-vertex index.
+#include "sweepcdt/editable_cdt.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <unordered_map>
+
+#include "../facet_hash.h"
+#include "../ids_text.h"
+#include "../sweep/sweep_cdt.h"
+#include "sheets.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
+
+namespace sweepcdt {
+
+using detail::TupleHash;
+using predicates::Sign;
+
+template <int D>
+struct EditableCdt<D>::Impl {
+  using Key = std::array<uint32_t, D>;  // a facet, sorted
+
+  // --- vertices ---
+  std::vector<double> points;
+  uint32_t num_input_points = 0;
+  std::vector<uint32_t> steiner_on;
+  std::vector<uint32_t> rank;    // the triangulation's perturbation_rank (may be empty)
+  std::vector<char> alive;
+  std::vector<uint32_t> simplex_at;  // per vertex: a live simplex holding it
+  std::size_t live_vertices = 0;
+
+  // --- simplices ---
+  std::vector<uint32_t> simplices, neighbors;
+  std::vector<int32_t> regions;
+  std::vector<uint32_t> free_slots;
+  std::size_t live_simplices = 0;
+
+  // --- constraints ---
+  std::vector<std::array<uint32_t, D>> constraints;
+  std::vector<ExteriorSide> exterior;  // empty when the PLC has no notations
+  std::vector<uint32_t> tags;          // one per constraint (all 0 when the PLC has none: has_tags)
+  bool has_tags = false;
+  std::vector<char> constraint_alive;
+  std::vector<std::vector<uint32_t>> constraints_at;  // per vertex (dead ones dropped lazily)
+  std::unordered_map<Key, uint32_t, TupleHash> constraint_of;
+  std::vector<RegionSeed<D>> region_seeds;
+
+  const double* point(uint32_t v) const { return points.data() + std::size_t{v} * D; }
+  uint32_t order(uint32_t v) const { return rank.empty() ? v : rank[v]; }
+  predicates::Vertex vertex(uint32_t v) const { return {point(v), order(v)}; }
+  uint32_t* simplex(uint32_t t) { return simplices.data() + std::size_t{t} * (D + 1); }
+  const uint32_t* simplex(uint32_t t) const { return simplices.data() + std::size_t{t} * (D + 1); }
+  static Key sorted(Key k) {
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+  // The facet of simplex t opposite its vertex i, in the simplex's order.
+  Key facet(uint32_t t, int i) const {
+    Key f;
+    for (int k = 0, j = 0; k <= D; ++k)
+      if (k != i) f[j++] = simplex(t)[k];
+    return f;
+  }
+
+  void add_constraint(const Key& c, ExteriorSide side, uint32_t tag) {
+    const uint32_t id = static_cast<uint32_t>(constraints.size());
+    constraints.push_back(c);
+    if (!exterior.empty() || side != ExteriorSide::None) {
+      exterior.resize(constraints.size() - 1, ExteriorSide::None);
+      exterior.push_back(side);
+    }
+    tags.push_back(tag);  // dropped again in the end when the PLC has none
+    constraint_alive.push_back(1);
+    for (uint32_t v : c) constraints_at[v].push_back(id);
+    constraint_of.emplace(sorted(c), id);
+  }
+
+  Impl(Plc<D> plc, Triangulation<D> tri)
+      : points(std::move(tri.points)), num_input_points(tri.num_input_points), steiner_on(std::move(tri.steiner_on)),
+        rank(std::move(tri.perturbation_rank)), simplices(std::move(tri.simplices)), neighbors(std::move(tri.neighbors)),
+        regions(std::move(tri.regions)), live_simplices(simplices.size() / (D + 1)), region_seeds(std::move(plc.region_seeds)) {
+    const std::size_t n = points.size() / D;
+    alive.assign(n, 0);
+    simplex_at.assign(n, kNone);
+    constraints_at.resize(n);
+    for (uint32_t t = 0; t < live_simplices; ++t)
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t v = simplex(t)[i];
+        if (!alive[v]) alive[v] = 1, ++live_vertices;
+        simplex_at[v] = t;
+      }
+    for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
+      Key c;
+      std::copy_n(plc.simplex(j), D, c.begin());
+      add_constraint(c, plc.exterior_of(j), plc.tags.empty() ? 0 : plc.tags[j]);
+    }
+    has_tags = !plc.tags.empty();
+  }
+
+  std::vector<uint32_t> live_constraints_at(uint32_t v) const {
+    std::vector<uint32_t> list;
+    for (uint32_t c : constraints_at[v])
+      if (constraint_alive[c]) list.push_back(c);
+    return list;
+  }
+
+  // The facets through v, each without v (the paper's recursion): indices into `through`.
+  std::vector<detail::Sheet<D>> sheets_through(uint32_t v, const std::vector<uint32_t>& through) const {
+    std::vector<Key> keys;
+    for (uint32_t c : through) keys.push_back(constraints[c]);
+    return detail::sheets_without<D>(
+        v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); });
+  }
+
+  void require_vertex(uint32_t v) const {
+    if (v >= alive.size() || !alive[v]) throw VertexRemovalError("vertex " + std::to_string(v) + " is not a vertex of the triangulation");
+  }
+
+  // --- the star of v -----------------------------------------------------------------------------
+  std::vector<uint32_t> star_of(uint32_t v) const {
+    std::vector<uint32_t> star{simplex_at[v]};
+    for (std::size_t k = 0; k < star.size(); ++k) {
+      const uint32_t t = star[k];
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
+        if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
+        const uint32_t u = across / (D + 1);
+        if (std::find(star.begin(), star.end(), u) == star.end()) star.push_back(u);
+      }
+    }
+    return star;
+  }
+
+  [[noreturn]] void no_cdt(uint32_t v, const std::string& why, std::vector<uint32_t> witness) const {
+    throw NoCdtError("deleting vertex " + std::to_string(v) + " leaves a PLC without a CDT: " + why, std::move(witness));
+  }
+
+  // --- deletion -----------------------------------------------------------------------------------
+  struct LinkFace {
+    Key key;          // sorted, global ids
+    uint32_t across;  // the neighbour outside the cavity (encoded as in neighbors), or kNone
+    int32_t region;   // of the star simplex it bounded
+  };
+  struct NewConstraint {
+    Key key;
+    ExteriorSide plc_side;  // its notation in the PLC
+    uint32_t tag;
+  };
+
+  void remove_vertex(uint32_t v) {
+    require_vertex(v);
+    if (live_vertices <= D + 1) throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the triangulation would be empty");
+    const std::vector<uint32_t> star = star_of(v);
+
+    // Boundary faces through v that are no constraints: v is on a convex-hull domain's boundary.
+    for (uint32_t t : star)
+      for (int i = 0; i <= D; ++i)
+        if (simplex(t)[i] != v && neighbors[std::size_t{t} * (D + 1) + i] == kNone && !constraint_of.count(sorted(facet(t, i))))
+          throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: it lies on the boundary of the convex hull (not implemented)");
+
+    // The facets through v, each without v (the paper's recursion).
+    const std::vector<uint32_t> through = live_constraints_at(v);
+    const auto sheets = sheets_through(v, through);
+
+    // The cavity as a PLC on the link's vertices, numbered in perturbation order.
+    std::vector<uint32_t> ids;
+    for (uint32_t t : star)
+      for (int i = 0; i <= D; ++i)
+        if (simplex(t)[i] != v) ids.push_back(simplex(t)[i]);
+    std::sort(ids.begin(), ids.end(), [&](uint32_t a, uint32_t b) { return order(a) < order(b); });
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    std::unordered_map<uint32_t, uint32_t> local;
+    Plc<D> cavity;
+    for (uint32_t x : ids) {
+      local[x] = static_cast<uint32_t>(cavity.num_points());
+      cavity.points.insert(cavity.points.end(), point(x), point(x) + D);
+    }
+    const auto add = [&](const Key& global, ExteriorSide side) {
+      for (uint32_t x : global) cavity.simplices.push_back(local.at(x));
+      cavity.exterior.push_back(side);
+    };
+    // The link: v's side is inside. Facet i of a positive simplex has v (its vertex i) on the side
+    // of sign (-1)^(D-i).
+    std::vector<LinkFace> link;
+    for (uint32_t t : star)
+      for (int i = 0; i <= D; ++i)
+        if (simplex(t)[i] == v) {
+          add(facet(t, i), (D - i) % 2 == 0 ? ExteriorSide::Negative : ExteriorSide::Positive);
+          link.push_back({sorted(facet(t, i)), neighbors[std::size_t{t} * (D + 1) + i], regions.empty() ? 0 : regions[t]});
+        }
+    // The sheets' new simplices: inner facets of the cavity, or its boundary where the star lies on
+    // one side of the sheet only (v on the domain's boundary).
+    std::vector<NewConstraint> added;
+    for (const auto& sheet : sheets) {
+      const uint32_t c0 = through[sheet.constraints.front()];
+      const ExteriorSide in_cavity = cavity_side(star, constraints[c0]);
+      const ExteriorSide in_plc = exterior.empty() ? ExteriorSide::None : exterior[c0];
+      for (const Key& s : sheet.fill) {
+        add(s, in_cavity);
+        added.push_back({s, in_plc, tags[c0]});
+      }
+    }
+
+    // Paper §5: the inward sweep from v, then the exact checks.
+    CdtStatistics stats;
+    Triangulation<D> fill;
+    std::array<double, D> centre;
+    std::copy_n(point(v), D, centre.begin());
+    try {
+      fill = detail::star_sweep_cdt<D>(cavity, centre, Options{}, stats);
+    } catch (const NoCdtError& e) {
+      std::vector<uint32_t> witness;
+      for (uint32_t x : e.witness()) witness.push_back(x < ids.size() ? ids[x] : x);
+      no_cdt(v, e.what(), witness);
+    }
+    compute_neighbors(fill);
+    const ValidationReport report = validate(fill, cavity);
+    if (!report.ok())
+      no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
+    for (uint32_t& x : fill.simplices) x = ids[x];
+    check_link_delaunay(v, fill, link);
+    commit(v, star, through, fill, link, added);
+  }
+
+  // Which side of constraint c (through v) is outside the cavity for the sweep: none when the star
+  // has simplices on both sides (an inner facet), else the side without them.
+  ExteriorSide cavity_side(const std::vector<uint32_t>& star, const Key& c) const {
+    const Key key = sorted(c);
+    int sides = 0, last = 0;
+    for (uint32_t t : star)
+      for (int i = 0; i <= D; ++i)
+        if (sorted(facet(t, i)) == key) {
+          predicates::Coords<D + 1> p;
+          for (int k = 0; k < D; ++k) p[k] = point(c[k]);
+          p[D] = point(simplex(t)[i]);
+          last = predicates::to_int(predicates::orient<D>(p));
+          ++sides;
+        }
+    if (sides != 1) return ExteriorSide::None;
+    return last > 0 ? ExteriorSide::Negative : ExteriorSide::Positive;
+  }
+
+  // Across every link face that is no constraint, the new simplex and the one outside must be
+  // locally Delaunay (under the same perturbation): with the cavity's own CDT validated and the
+  // rest unchanged, every facet of the whole is then locally constrained Delaunay — a CDT.
+  void check_link_delaunay(uint32_t v, const Triangulation<D>& fill, const std::vector<LinkFace>& link) const {
+    std::unordered_map<Key, uint32_t, TupleHash> inner_of;  // link face -> the new simplex on it
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i)
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) {
+          Key f;
+          for (int k = 0, j = 0; k <= D; ++k)
+            if (k != i) f[j++] = fill.simplex(t)[k];
+          inner_of.emplace(sorted(f), t);
+        }
+    for (const LinkFace& face : link) {
+      if (face.across == kNone || constraint_of.count(face.key)) continue;
+      const uint32_t apex = simplex(face.across / (D + 1))[face.across % (D + 1)];
+      const uint32_t t = inner_of.at(face.key);
+      predicates::Vertices<D + 1> s;
+      for (int i = 0; i <= D; ++i) s[i] = vertex(fill.simplex(t)[i]);
+      if (predicates::inside_circumsphere<D>(s, vertex(apex))) {
+        std::vector<uint32_t> witness(fill.simplex(t), fill.simplex(t) + D + 1);
+        witness.push_back(apex);
+        no_cdt(v, "simplex " + detail::ids_text(fill.simplex(t), D + 1) + " of the cavity has vertex " + std::to_string(apex) +
+                      " inside its circumsphere across face " + detail::ids_text(face.key.data(), D),
+               witness);
+      }
+    }
+  }
+
+  uint32_t new_slot() {
+    ++live_simplices;
+    if (!free_slots.empty()) {
+      const uint32_t t = free_slots.back();
+      free_slots.pop_back();
+      return t;
+    }
+    const uint32_t t = static_cast<uint32_t>(simplices.size() / (D + 1));
+    simplices.resize(simplices.size() + D + 1);
+    neighbors.resize(neighbors.size() + D + 1);
+    if (!regions.empty()) regions.push_back(0);
+    return t;
+  }
+
+  void commit(uint32_t v, const std::vector<uint32_t>& star, const std::vector<uint32_t>& through, const Triangulation<D>& fill,
+              const std::vector<LinkFace>& link, const std::vector<NewConstraint>& added) {
+    for (uint32_t t : star) {
+      simplex(t)[0] = kNone;
+      free_slots.push_back(t);
+      --live_simplices;
+    }
+    alive[v] = 0;
+    --live_vertices;
+    simplex_at[v] = kNone;
+    for (uint32_t c : through) {
+      constraint_alive[c] = 0;
+      constraint_of.erase(sorted(constraints[c]));
+    }
+    for (const NewConstraint& c : added) add_constraint(c.key, c.plc_side, c.tag);
+
+    std::vector<uint32_t> slot(fill.num_simplices());
+    for (auto& s : slot) s = new_slot();
+    std::unordered_map<Key, const LinkFace*, TupleHash> link_of;
+    for (const LinkFace& f : link) link_of.emplace(f.key, &f);
+    std::vector<uint32_t> unseeded;
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t) {
+      const uint32_t g = slot[t];
+      std::copy_n(fill.simplex(t), D + 1, simplex(g));
+      for (int i = 0; i <= D; ++i) {
+        simplex_at[simplex(g)[i]] = g;
+        uint32_t& across = neighbors[std::size_t{g} * (D + 1) + i];
+        const uint32_t inner = fill.neighbors[std::size_t{t} * (D + 1) + i];
+        if (inner != kNone) {
+          across = slot[inner / (D + 1)] * (D + 1) + inner % (D + 1);
+          continue;
+        }
+        const auto f = link_of.find(sorted(facet(g, i)));
+        across = kNone;  // not on the link: a sheet's new simplex on the domain's boundary
+        if (f == link_of.end()) continue;
+        across = f->second->across;
+        if (across != kNone) neighbors[across] = g * (D + 1) + i;
+        if (!regions.empty()) regions[g] = f->second->region;
+      }
+    }
+    if (!regions.empty()) spread_regions(fill, slot, link_of);
+  }
+
+  // Regions: a new simplex on the link takes the region of the star simplex it replaced there; the
+  // others take their neighbours' across facets that are no constraints.
+  void spread_regions(const Triangulation<D>& fill, const std::vector<uint32_t>& slot,
+                      const std::unordered_map<Key, const LinkFace*, TupleHash>& link_of) {
+    std::vector<char> known(fill.num_simplices(), 0);
+    std::vector<uint32_t> queue;
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i)
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && link_of.count(sorted(facet(slot[t], i))) && !known[t])
+          known[t] = 1, queue.push_back(t);
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+      const uint32_t t = queue[k];
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t inner = fill.neighbors[std::size_t{t} * (D + 1) + i];
+        if (inner == kNone || known[inner / (D + 1)] || constraint_of.count(sorted(facet(slot[t], i)))) continue;
+        known[inner / (D + 1)] = 1;
+        regions[slot[inner / (D + 1)]] = regions[slot[t]];
+        queue.push_back(inner / (D + 1));
+      }
+    }
+  }
+
+  Plc<D> plc_without(uint32_t v) const {
+    require_vertex(v);
+    const std::vector<uint32_t> through = live_constraints_at(v);
+    std::vector<uint32_t> renumber(alive.size(), kNone);
+    Plc<D> plc;
+    for (uint32_t x = 0; x < alive.size(); ++x)
+      if (alive[x] && x != v) {
+        renumber[x] = static_cast<uint32_t>(plc.num_points());
+        plc.points.insert(plc.points.end(), point(x), point(x) + D);
+      }
+    plc.region_seeds = region_seeds;
+    const auto add = [&](const Key& c, ExteriorSide side, uint32_t tag) {
+      for (uint32_t x : c) plc.simplices.push_back(renumber[x]);
+      plc.exterior.push_back(side);
+      plc.tags.push_back(tag);
+    };
+    for (uint32_t c = 0; c < constraints.size(); ++c)
+      if (constraint_alive[c] && !std::count(through.begin(), through.end(), c))
+        add(constraints[c], c < exterior.size() ? exterior[c] : ExteriorSide::None, tags[c]);
+    for (const auto& sheet : sheets_through(v, through)) {
+      const uint32_t c0 = through[sheet.constraints.front()];
+      for (const Key& s : sheet.fill) add(s, c0 < exterior.size() ? exterior[c0] : ExteriorSide::None, tags[c0]);
+    }
+    if (exterior.empty()) plc.exterior.clear();
+    if (!has_tags) plc.tags.clear();
+    return plc;
+  }
+
+  Snapshot snapshot() const {
+    Snapshot out;
+    std::vector<uint32_t> renumber(alive.size(), kNone);
+    Triangulation<D>& tri = out.triangulation;
+    for (uint32_t x = 0; x < alive.size(); ++x) {
+      if (!alive[x]) continue;
+      renumber[x] = static_cast<uint32_t>(out.old_ids.size());
+      out.old_ids.push_back(x);
+      tri.points.insert(tri.points.end(), point(x), point(x) + D);
+      if (x < num_input_points) ++tri.num_input_points;
+      else tri.steiner_on.push_back(steiner_on[x - num_input_points]);
+    }
+    if (!rank.empty()) {  // the same order among the vertices left, as ranks 0..n-1
+      std::vector<uint32_t> by_rank = out.old_ids;
+      std::sort(by_rank.begin(), by_rank.end(), [&](uint32_t a, uint32_t b) { return rank[a] < rank[b]; });
+      tri.perturbation_rank.resize(by_rank.size());
+      for (uint32_t r = 0; r < by_rank.size(); ++r) tri.perturbation_rank[renumber[by_rank[r]]] = r;
+    }
+    std::vector<uint32_t> compact(simplices.size() / (D + 1), kNone);
+    uint32_t count = 0;
+    for (uint32_t t = 0; t < compact.size(); ++t)
+      if (simplex(t)[0] != kNone) compact[t] = count++;
+    for (uint32_t t = 0; t < compact.size(); ++t) {
+      if (compact[t] == kNone) continue;
+      for (int i = 0; i <= D; ++i) {
+        tri.simplices.push_back(renumber[simplex(t)[i]]);
+        const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
+        tri.neighbors.push_back(across == kNone ? kNone : compact[across / (D + 1)] * (D + 1) + across % (D + 1));
+      }
+      if (!regions.empty()) tri.regions.push_back(regions[t]);
+    }
+    Plc<D>& plc = out.plc;
+    plc.points = tri.points;
+    plc.region_seeds = region_seeds;
+    for (uint32_t c = 0; c < constraints.size(); ++c) {
+      if (!constraint_alive[c]) continue;
+      for (uint32_t x : constraints[c]) plc.simplices.push_back(renumber[x]);
+      if (!exterior.empty()) plc.exterior.push_back(c < exterior.size() ? exterior[c] : ExteriorSide::None);
+      if (has_tags) plc.tags.push_back(tags[c]);
+    }
+    return out;
+  }
+};
+
+template <int D>
+EditableCdt<D>::EditableCdt(Plc<D> plc, Triangulation<D> tri) {
+  if (tri.neighbors.size() != tri.simplices.size()) compute_neighbors(tri);
+  impl_ = std::make_unique<Impl>(std::move(plc), std::move(tri));
+}
+
+template <int D>
+EditableCdt<D>::EditableCdt(EditableCdt&&) noexcept = default;
+template <int D>
+EditableCdt<D>& EditableCdt<D>::operator=(EditableCdt&&) noexcept = default;
+template <int D>
+EditableCdt<D>::~EditableCdt() = default;
+
+template <int D>
+void EditableCdt<D>::remove_vertex(uint32_t v) {
+  impl_->remove_vertex(v);
+}
+template <int D>
+bool EditableCdt<D>::has_vertex(uint32_t v) const {
+  return v < impl_->alive.size() && impl_->alive[v];
+}
+template <int D>
+std::size_t EditableCdt<D>::num_vertices() const {
+  return impl_->live_vertices;
+}
+template <int D>
+std::size_t EditableCdt<D>::num_simplices() const {
+  return impl_->live_simplices;
+}
+template <int D>
+Plc<D> EditableCdt<D>::plc_without(uint32_t v) const {
+  return impl_->plc_without(v);
+}
+template <int D>
+typename EditableCdt<D>::Snapshot EditableCdt<D>::snapshot() const {
+  return impl_->snapshot();
+}
+
+template class EditableCdt<2>;
+template class EditableCdt<3>;
+template class EditableCdt<4>;
+template class EditableCdt<5>;
+
+}  // namespace sweepcdt

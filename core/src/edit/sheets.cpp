@@ -1,0 +1,266 @@
+// Sheets through a deleted vertex and their new triangulations (sheets.h).
+#include "sheets.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "../ids_text.h"
+#include "sweepcdt/editable_cdt.h"
+#include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/star_cdt.h"
+
+namespace sweepcdt::detail {
+namespace {
+
+using predicates::Sign;
+
+struct UnionFind {
+  std::vector<uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  uint32_t find(uint32_t x) { return parent[x] == x ? x : parent[x] = find(parent[x]); }
+  void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
+};
+
+template <int D>
+class SheetBuilder {
+ public:
+  SheetBuilder(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v, const std::function<const double*(uint32_t)>& point,
+               const std::function<uint32_t(uint32_t)>& order)
+      : v_(v), through_v_(through_v), point_(point), order_(order) {}
+
+  std::vector<Sheet<D>> run() {
+    // Ridges through v (a constraint without one of its other vertices) -> the constraints on them.
+    std::map<std::vector<uint32_t>, std::vector<uint32_t>> ridges;
+    for (uint32_t c = 0; c < through_v_.size(); ++c)
+      for (int i = 0; i < D; ++i)
+        if (through_v_[c][i] != v_) ridges[ridge(c, i)].push_back(c);
+    UnionFind sheets(through_v_.size());
+    for (const auto& [r, on] : ridges)
+      if (on.size() == 2 && coplanar(on[0], on[1]) && opposite(on[0], on[1], r)) sheets.unite(on[0], on[1]);
+    std::map<uint32_t, Sheet<D>> by_root;
+    for (uint32_t c = 0; c < through_v_.size(); ++c) by_root[sheets.find(c)].constraints.push_back(c);
+    std::vector<Sheet<D>> result;
+    for (auto& [root, sheet] : by_root) {
+      fill(sheet, ridges);
+      result.push_back(std::move(sheet));
+    }
+    return result;
+  }
+
+ private:
+  std::vector<uint32_t> ridge(uint32_t c, int skip) const {
+    std::vector<uint32_t> r;
+    for (int i = 0; i < D; ++i)
+      if (i != skip) r.push_back(through_v_[c][i]);
+    std::sort(r.begin(), r.end());
+    return r;
+  }
+  uint32_t apex(uint32_t c, const std::vector<uint32_t>& r) const {
+    for (uint32_t x : through_v_[c])
+      if (!std::binary_search(r.begin(), r.end(), x)) return x;
+    return v_;
+  }
+  Sign orient_with(uint32_t c, uint32_t x) const {
+    predicates::Coords<D + 1> p;
+    for (int i = 0; i < D; ++i) p[i] = point_(through_v_[c][i]);
+    p[D] = point_(x);
+    return predicates::orient<D>(p);
+  }
+  bool coplanar(uint32_t a, uint32_t b) const {
+    for (uint32_t x : through_v_[b])
+      if (orient_with(a, x) != Sign::Zero) return false;
+    return true;
+  }
+  // Two coplanar simplices on ridge r lie on its two sides (one sheet), not folded onto each other.
+  bool opposite(uint32_t a, uint32_t b, const std::vector<uint32_t>& r) const {
+    if constexpr (D == 2) {
+      const double *x = point_(r[0]), *p = point_(apex(a, r)), *q = point_(apex(b, r));
+      for (int k = 0; k < 2; ++k)
+        if (p[k] != x[k]) return (p[k] < x[k]) != (q[k] < x[k]);
+      return false;
+    } else {
+      // In the hyperplane, the apexes are on opposite sides of r iff the simplices are oppositely
+      // oriented when written as (r, apex): compare in a projection that keeps the hyperplane's
+      // orientation.
+      const int k = projection_axis(a);
+      return projected_orient(r, apex(a, r), k) == -projected_orient(r, apex(b, r), k);
+    }
+  }
+
+  // A coordinate axis along which the hyperplane of constraint c projects one-to-one.
+  int projection_axis(uint32_t c) const {
+    if constexpr (D == 2) {
+      return point_(through_v_[c][0])[0] != point_(through_v_[c][1])[0] ? 1 : 0;
+    } else {
+      for (int k = 0; k < D; ++k) {
+        std::vector<uint32_t> ids(through_v_[c].begin(), through_v_[c].end() - 1);
+        if (projected_orient(ids, through_v_[c][D - 1], k) != Sign::Zero) return k;
+      }
+      return 0;  // unreachable for a non-degenerate constraint
+    }
+  }
+  std::array<double, D - 1> project(uint32_t x, int axis) const {
+    std::array<double, D - 1> p;
+    for (int i = 0, j = 0; i < D; ++i)
+      if (i != axis) p[j++] = point_(x)[i];
+    return p;
+  }
+  Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const {
+    if constexpr (D == 2) {
+      return Sign::Zero;
+    } else {
+      std::array<std::array<double, D - 1>, D> p;
+      predicates::Coords<D> c;
+      for (int i = 0; i < D; ++i) {
+        p[i] = project(i + 1 < D ? ids[i] : last, axis);
+        c[i] = p[i].data();
+      }
+      return predicates::orient<D - 1>(c);
+    }
+  }
+
+  [[noreturn]] void refuse(const Sheet<D>& sheet, const std::string& why) const {
+    throw VertexRemovalError("vertex " + std::to_string(v_) + " cannot be deleted: " + why + " (constraining simplex " +
+                             ids_text(through_v_[sheet.constraints.front()].data(), D) + ")");
+  }
+
+  void fill(Sheet<D>& sheet, const std::map<std::vector<uint32_t>, std::vector<uint32_t>>& ridges) {
+    // Free ridges: on one simplex of the sheet — the sheet's boundary passes through v there.
+    std::vector<std::vector<uint32_t>> free;
+    std::map<std::vector<uint32_t>, int> count;
+    for (uint32_t c : sheet.constraints)
+      for (int i = 0; i < D; ++i)
+        if (through_v_[c][i] != v_) ++count[ridge(c, i)];
+    for (const auto& [r, n] : count) {
+      if (n == 1) free.push_back(r);
+      else if (ridges.at(r).size() != 2) refuse(sheet, "more than two facets meet at a ridge through it");
+    }
+    if constexpr (D == 2) {
+      if (sheet.constraints.size() != 2) refuse(sheet, "it is an end of a constraining segment");
+      std::array<uint32_t, 2> ab;
+      for (int j = 0; j < 2; ++j) {
+        const auto& c = through_v_[sheet.constraints[j]];
+        ab[j] = c[0] == v_ ? c[1] : c[0];
+      }
+      sheet.fill.push_back(orient_segment_like(ab, through_v_[sheet.constraints[0]]));  // runs the same way
+    } else {
+      std::vector<uint32_t> closing;  // the straight edge through v that the sheet's boundary keeps
+      if (!free.empty()) {
+        if (D != 3) refuse(sheet, "it lies on the boundary of a facet (handled in D = 3 only)");
+        if (free.size() != 2) refuse(sheet, "it is a corner of a facet");
+        const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
+        const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
+        if (!strictly_between(a, v_, b)) refuse(sheet, "it is a corner of a facet");
+        closing = {std::min(a, b), std::max(a, b)};
+      }
+      triangulate(sheet, closing);
+    }
+  }
+
+  std::array<uint32_t, 2> orient_segment_like(std::array<uint32_t, 2> ab, const std::array<uint32_t, D>& c0) const {
+    // On one line: compare the direction along an axis where c0 has extent (so has ab).
+    for (int k = 0; k < D; ++k)
+      if (point_(c0[1])[k] != point_(c0[0])[k]) {
+        if ((point_(c0[0])[k] < point_(c0[1])[k]) != (point_(ab[0])[k] < point_(ab[1])[k])) std::swap(ab[0], ab[1]);
+        break;
+      }
+    return ab;
+  }
+
+  // a, v, b on one line (exactly) with v strictly between a and b.
+  bool strictly_between(uint32_t a, uint32_t v, uint32_t b) const {
+    const double *pa = point_(a), *pv = point_(v), *pb = point_(b);
+    for (int i = 0; i < D; ++i)
+      for (int j = i + 1; j < D; ++j) {
+        const double x[3][2] = {{pa[i], pa[j]}, {pv[i], pv[j]}, {pb[i], pb[j]}};
+        if (predicates::orient<2>({x[0], x[1], x[2]}) != Sign::Zero) return false;
+      }
+    for (int i = 0; i < D; ++i)
+      if (pa[i] != pb[i]) return (pa[i] < pv[i] && pv[i] < pb[i]) || (pb[i] < pv[i] && pv[i] < pa[i]);
+    return false;
+  }
+
+  // The (D-1)-dimensional star CDT of the sheet's polytope without v, on its projection.
+  void triangulate(Sheet<D>& sheet, const std::vector<uint32_t>& closing) {
+    if constexpr (D > 2) {
+      const uint32_t c0 = sheet.constraints.front();
+      const int axis = projection_axis(c0);
+      std::vector<std::vector<uint32_t>> boundary;
+      for (uint32_t c : sheet.constraints)
+        for (int i = 0; i < D; ++i)
+          if (through_v_[c][i] == v_) boundary.push_back(ridge(c, i));
+      if (!closing.empty()) boundary.push_back(closing);
+      std::vector<uint32_t> ids;
+      for (const auto& r : boundary) ids.insert(ids.end(), r.begin(), r.end());
+      std::sort(ids.begin(), ids.end(), [&](uint32_t x, uint32_t y) { return order_(x) < order_(y); });
+      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      std::map<uint32_t, uint32_t> local;
+      Plc<D - 1> polytope;
+      for (uint32_t x : ids) {
+        local[x] = static_cast<uint32_t>(polytope.num_points());
+        const auto p = project(x, axis);
+        polytope.points.insert(polytope.points.end(), p.begin(), p.end());
+      }
+      const auto centre = project(v_, axis);
+      for (const auto& r : boundary) {
+        // The polytope lies on v's side of each boundary face; the closing edge passes through v,
+        // so there a vertex of the sheet off it tells the side.
+        uint32_t inside = v_;
+        if (r == closing)
+          for (uint32_t c : sheet.constraints)
+            if (std::count(through_v_[c].begin(), through_v_[c].end(), r[0]))
+              for (uint32_t x : through_v_[c])
+                if (x != v_ && x != r[0] && x != r[1]) inside = x;
+        predicates::Coords<D> c;
+        std::array<std::array<double, D - 1>, D> p;
+        for (int i = 0; i < D - 1; ++i) p[i] = project(r[i], axis);
+        p[D - 1] = project(inside, axis);
+        for (int i = 0; i < D; ++i) c[i] = p[i].data();
+        const Sign o = predicates::orient<D - 1>(c);
+        for (uint32_t x : r) polytope.simplices.push_back(local[x]);
+        polytope.exterior.push_back(o == Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
+      }
+      Triangulation<D - 1> tri;
+      try {
+        tri = star_cdt<D - 1>(polytope, centre);
+      } catch (const NoCdtError& e) {
+        refuse(sheet, std::string("its facet has no CDT without it (") + e.what() + ")");
+      }
+      // Oriented like c0 within the hyperplane: the same sign of the projected orientation.
+      const Sign want = projected_orient(std::vector<uint32_t>(through_v_[c0].begin(), through_v_[c0].end() - 1), through_v_[c0][D - 1], axis);
+      for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
+        std::array<uint32_t, D> s;
+        for (int i = 0; i < D; ++i) s[i] = ids[tri.simplex(t)[i]];
+        if (want == Sign::Negative) std::swap(s[0], s[1]);  // star_cdt's simplices are positively oriented
+        sheet.fill.push_back(s);
+      }
+    }
+  }
+
+  const uint32_t v_;
+  const std::vector<std::array<uint32_t, D>>& through_v_;
+  const std::function<const double*(uint32_t)>& point_;
+  const std::function<uint32_t(uint32_t)>& order_;
+};
+
+}  // namespace
+
+template <int D>
+std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
+                                     const std::function<const double*(uint32_t)>& point,
+                                     const std::function<uint32_t(uint32_t)>& order) {
+  return SheetBuilder<D>(v, through_v, point, order).run();
+}
+
+template std::vector<Sheet<2>> sheets_without<2>(uint32_t, const std::vector<std::array<uint32_t, 2>>&,
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+template std::vector<Sheet<3>> sheets_without<3>(uint32_t, const std::vector<std::array<uint32_t, 3>>&,
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+template std::vector<Sheet<4>> sheets_without<4>(uint32_t, const std::vector<std::array<uint32_t, 4>>&,
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+template std::vector<Sheet<5>> sheets_without<5>(uint32_t, const std::vector<std::array<uint32_t, 5>>&,
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+
+}  // namespace sweepcdt::detail

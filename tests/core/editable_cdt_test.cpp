@@ -1,0 +1,235 @@
+// Vertex deletion (EditableCdt, paper §5) against the CDT computed from scratch: after every
+// deletion the CDT must equal cdt() of the PLC that is left (the CDT is unique under the §6
+// perturbation) and pass validate(); deletions that are refused leave everything unchanged.
+// Inputs in D = 2..5: points in a simplex whose facets are notated constraints (vertices inside,
+// on the facets — where the facet is re-triangulated — and, for D = 3, on edges), the integer grid
+// (exact ties everywhere), convex-hull domains, and a PLC that has a CDT only with its vertex.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "star_shapes.h"
+#include "sweepcdt/editable_cdt.h"
+#include "sweepcdt/validate.h"
+#include "test_shapes.h"
+#include "triangulation_util.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+// The boundary of the CDT of `points` (its hull faces) as notated constraints: a facet-bounded
+// PLC with the same CDT.
+template <int D>
+Plc<D> hull_bounded(const std::vector<double>& points) {
+  Plc<D> plc;
+  plc.points = points;
+  const Triangulation<D> hull = cdt(plc);
+  for (std::size_t t = 0; t < hull.num_simplices(); ++t)
+    for (int i = 0; i <= D; ++i) {
+      if (hull.neighbors[t * (D + 1) + i] != kNone) continue;
+      for (int k = 0; k <= D; ++k)
+        if (k != i) plc.simplices.push_back(hull.simplex(t)[k]);
+      plc.exterior.push_back((D - i) % 2 == 0 ? ExteriorSide::Negative : ExteriorSide::Positive);
+    }
+  return plc;
+}
+
+// Integer points of the simplex {x >= 0, sum x <= size}: its corners, then `count` at random. With
+// `general`, only points inside it or inside its facets (on exactly one of its D + 1 hyperplanes),
+// none on lower-dimensional faces.
+template <int D>
+std::vector<double> simplex_points(std::mt19937_64& rng, int count, int size, bool general = false) {
+  std::set<std::vector<double>> seen;
+  std::vector<double> points;
+  const auto add = [&](const std::vector<double>& p) {
+    if (seen.insert(p).second) points.insert(points.end(), p.begin(), p.end());
+  };
+  add(std::vector<double>(D, 0.0));
+  for (int k = 0; k < D; ++k) {
+    std::vector<double> corner(D, 0.0);
+    corner[k] = size;
+    add(corner);
+  }
+  std::uniform_int_distribution<int> coordinate(0, size);
+  while (static_cast<int>(seen.size()) < count + D + 1) {
+    std::vector<double> p(D);
+    int sum = 0, on = 0;
+    for (auto& x : p) {
+      sum += static_cast<int>(x = coordinate(rng));
+      on += x == 0;
+    }
+    on += sum == size;
+    if (sum <= size && (!general || on <= 1)) add(p);
+  }
+  return points;
+}
+
+struct Tally {
+  int deleted = 0, refused = 0, no_cdt = 0;
+};
+
+// Deletes vertices in random order, checking each result against cdt() from scratch, until no
+// further deletion succeeds. Returns what happened.
+template <int D>
+Tally delete_all(const Plc<D>& plc, uint64_t seed, const std::string& what) {
+  EditableCdt<D> mesh(plc, cdt(plc));
+  std::vector<uint32_t> order(plc.num_points());
+  for (uint32_t v = 0; v < order.size(); ++v) order[v] = v;
+  std::mt19937_64 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  Tally tally;
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (uint32_t v : order) {
+      if (!mesh.has_vertex(v)) continue;
+      const auto before = mesh.snapshot();
+      try {
+        mesh.remove_vertex(v);
+      } catch (const VertexRemovalError&) {
+        ++tally.refused;
+        EXPECT_EQ(fixtures::simplex_set(mesh.snapshot().triangulation), fixtures::simplex_set(before.triangulation)) << what;
+        continue;
+      } catch (const NoCdtError& e) {
+        ++tally.no_cdt;
+        EXPECT_EQ(fixtures::simplex_set(mesh.snapshot().triangulation), fixtures::simplex_set(before.triangulation)) << what;
+        continue;
+      }
+      progress = true;
+      ++tally.deleted;
+      const auto now = mesh.snapshot();
+      const auto report = validate(now.triangulation, now.plc);
+      if (!report.ok()) {
+        ADD_FAILURE() << what << " after deleting " << v << "\n" << report.summary();
+        return tally;
+      }
+      Triangulation<D> reference;
+      try {
+        reference = cdt(now.plc);
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << what << " after deleting " << v << ": cdt() from scratch: " << e.what();
+        return tally;
+      }
+      if (fixtures::simplex_set(now.triangulation) != fixtures::simplex_set(reference)) {
+        ADD_FAILURE() << what << " after deleting " << v << ": not the CDT computed from scratch";
+        return tally;
+      }
+    }
+  }
+  return tally;
+}
+
+template <int D>
+void simplex_domain(int count, int size, int seeds) {
+  for (int seed = 0; seed < seeds; ++seed) {
+    std::mt19937_64 rng(91 * D + seed);
+    const Plc<D> plc = hull_bounded<D>(simplex_points<D>(rng, count, size, true));
+    const std::string what = "D=" + std::to_string(D) + " simplex seed " + std::to_string(seed);
+    const Tally tally = delete_all(plc, seed, what);
+    EXPECT_GT(tally.deleted, count / 2) << what << ": " << tally.refused << " refused, " << tally.no_cdt << " without CDT";
+  }
+}
+
+}  // namespace
+
+// In D = 2 and 3 every vertex but the simplex's corners can go: the result is one simplex.
+TEST(EditableCdt, DeleteDownToASimplex2) {
+  std::mt19937_64 rng(3);
+  const Plc<2> plc = hull_bounded<2>(simplex_points<2>(rng, 40, 16));
+  const Tally tally = delete_all(plc, 3, "D=2");
+  EXPECT_EQ(tally.deleted, static_cast<int>(plc.num_points()) - 3);
+}
+TEST(EditableCdt, DeleteDownToASimplex3) {
+  for (int seed = 0; seed < 3; ++seed) {
+    std::mt19937_64 rng(seed);
+    const Plc<3> plc = hull_bounded<3>(simplex_points<3>(rng, 40, 8));
+    const Tally tally = delete_all(plc, seed, "D=3 seed " + std::to_string(seed));
+    EXPECT_EQ(tally.deleted, static_cast<int>(plc.num_points()) - 4) << "seed " << seed << ": " << tally.no_cdt << " without CDT";
+  }
+}
+TEST(EditableCdt, SimplexDomain4) { simplex_domain<4>(24, 10, 2); }
+TEST(EditableCdt, SimplexDomain5) { simplex_domain<5>(16, 10, 1); }
+
+// The grid: cospherical ties everywhere, facets full of coplanar points.
+TEST(EditableCdt, Grid2) {
+  std::mt19937_64 rng(1);
+  const Tally tally = delete_all(hull_bounded<2>(fixtures::distinct_grid_points<2>(rng, 25, 4)), 1, "D=2 grid");
+  EXPECT_GT(tally.deleted, 10);
+}
+TEST(EditableCdt, Grid3) {
+  std::mt19937_64 rng(2);
+  const Tally tally = delete_all(hull_bounded<3>(fixtures::distinct_grid_points<3>(rng, 27, 2)), 2, "D=3 grid");
+  EXPECT_GT(tally.deleted, 10);
+}
+TEST(EditableCdt, Grid4) {
+  std::mt19937_64 rng(4);
+  const Tally tally = delete_all(hull_bounded<4>(fixtures::distinct_grid_points<4>(rng, 40, 2)), 4, "D=4 grid");
+  EXPECT_GT(tally.deleted, 2);  // most grid points lie on lower-dimensional faces of the box (refused in D = 4)
+}
+
+// Convex-hull domains: interior vertices go; hull vertices are refused (not implemented).
+TEST(EditableCdt, HullDomain3) {
+  std::mt19937_64 rng(8);
+  Plc<3> plc;
+  plc.points = fixtures::distinct_grid_points<3>(rng, 60, 1 << 20);
+  const Tally tally = delete_all(plc, 8, "D=3 hull");
+  EXPECT_GT(tally.deleted, 20);
+  EXPECT_GT(tally.refused, 0);
+}
+
+// Schönhardt's twisted prism has no CDT (no triangulation at all); with Steiner points it has one.
+// Deleting them all cannot succeed: each deletion that fails must fail exactly when cdt() of the
+// PLC left without that vertex finds no CDT (under vertex-id order: §6), and leave the mesh as it was.
+TEST(EditableCdt, DeletionsThatLeaveNoCdt) {
+  const Plc<3> prism = fixtures::twisted_prism(0.5);
+  EXPECT_THROW(cdt(prism), NoCdtError);
+  Options steiner;
+  steiner.steiner = SteinerMode::Auto;
+  Plc<3> refined;
+  Triangulation<3> tri = cdt(prism, steiner, &refined);
+  ASSERT_GT(tri.num_points(), prism.num_points());
+  EditableCdt<3> mesh(refined, tri);
+  int failed = 0, deleted = 0;
+  for (uint32_t v = static_cast<uint32_t>(prism.num_points()); v < tri.num_points(); ++v) {
+    Plc<3> left;
+    try {
+      left = mesh.plc_without(v);
+    } catch (const VertexRemovalError&) {  // a rounded Steiner point off its segment: a corner
+      EXPECT_THROW(mesh.remove_vertex(v), VertexRemovalError);
+      continue;
+    }
+    bool has_cdt = true;
+    try {
+      has_cdt = cdt(left).perturbation_rank.empty();
+    } catch (const NoCdtError&) {
+      has_cdt = false;
+    }
+    const auto before = mesh.snapshot();
+    try {
+      mesh.remove_vertex(v);
+      ++deleted;
+      EXPECT_TRUE(has_cdt) << v;
+      const auto now = mesh.snapshot();
+      EXPECT_EQ(now.plc.simplices, left.simplices) << v;
+      EXPECT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(left))) << v;
+    } catch (const NoCdtError&) {
+      ++failed;
+      EXPECT_FALSE(has_cdt) << v;
+      const auto after = mesh.snapshot();
+      EXPECT_EQ(fixtures::simplex_set(after.triangulation), fixtures::simplex_set(before.triangulation));
+      EXPECT_EQ(after.plc.simplices, before.plc.simplices);
+    }
+  }
+  EXPECT_GT(failed, 0);
+  const auto last = mesh.snapshot();
+  EXPECT_TRUE(validate_triangulated(last.triangulation, last.plc).ok());
+}
+
+TEST(EditableCdt, RefusesCornersAndUnknownVertices) {
+  const Plc<3> cube = fixtures::unit_cube_surface();
+  EditableCdt<3> mesh(cube, cdt(cube));
+  EXPECT_THROW(mesh.remove_vertex(0), VertexRemovalError);   // a corner
+  EXPECT_THROW(mesh.remove_vertex(99), VertexRemovalError);  // no such vertex
+  EXPECT_EQ(mesh.num_vertices(), 8u);
+}
