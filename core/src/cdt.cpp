@@ -12,6 +12,7 @@
 #include "gift_wrap.h"
 #include "regions.h"
 #include "relabel.h"
+#include "edit/remove_steiner.h"
 #include "steiner/refine.h"
 #include "sweep/sweep_cdt.h"
 #include "sweepcdt/perturbation_order.h"
@@ -114,6 +115,11 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       Triangulation<3> tri = triangulate(refined.plc, options, stats, clock);
       tri.num_input_points = refined.num_input_points;
       tri.steiner_on = std::move(refined.steiner_on);
+      if (options.remove_steiner_points && !tri.steiner_on.empty()) {
+        stats.steiner_points_removed = detail::remove_steiner_points(tri, refined.plc, options);
+        stats.steiner_points = tri.steiner_on.size();
+        stats.seconds_finish += clock.lap();
+      }
       if (triangulated) *triangulated = std::move(refined.plc);
       return tri;
     }

@@ -128,7 +128,12 @@ std::string summary_of(const FileResult& r) {
   std::snprintf(buf, sizeof buf, " (%s, %.2f s)", to_string(r.cdt.algorithm), r.seconds_total);
   const char* what = r.dimension == 2 ? " triangles" : r.dimension == 3 ? " tetrahedra" : " simplices";
   std::string s = std::to_string(r.simplices) + what;
-  if (r.dimension == 3) s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
+  if (r.dimension == 3) {
+    s += ", " + std::to_string(r.cdt.steiner_points) + " Steiner points";
+    if (r.cdt.steiner_points_removed)  // issue 17: refinement's points that a CDT can do without
+      s += " (" + std::to_string(r.cdt.steiner_points + r.cdt.steiner_points_removed) + " added, " +
+           std::to_string(r.cdt.steiner_points_removed) + " deleted again)";
+  }
   // Paper §6: the vertex-id perturbation left the PLC without a CDT; say which order gave one.
   if (r.snap.points_moved > 0) {
     char moved[64];

@@ -12,6 +12,7 @@ Options core_options(const RunOptions& options, CdtStatistics* statistics, std::
   o.algorithm = options.algorithm;
   o.steiner = options.steiner;
   o.facets = options.facets;
+  o.remove_steiner_points = !options.keep_steiner;
   o.statistics = statistics;
   o.progress = std::move(progress);
   return o;
@@ -45,6 +46,8 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
     else throw UsageError("--steiner must be auto or none, not '" + v + "'");
   } else if (args.value("--snap", v)) {
     options.snap = parse_snap(v);
+  } else if (args.flag("--keep-steiner-points")) {
+    options.keep_steiner = true;
   } else if (args.flag("--check")) {
     options.check = true;
   } else if (args.value("--stats", v)) {

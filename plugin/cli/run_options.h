@@ -14,6 +14,7 @@ struct RunOptions {
   Algorithm algorithm = Algorithm::SweepSphere;
   SteinerMode steiner = mesh_defaults().steiner;  // --steiner auto|none (`cdt` sets none)
   FacetMode facets = mesh_defaults().facets;      // --facets triangles|coplanar (3D)
+  bool keep_steiner = false;  // --keep-steiner-points: skip deleting the Steiner points a CDT can do without
   double snap = 0;  // --snap TOL: snap surface coordinates first (sweepcdt/io/snap.h); 0 = exact input
   bool check = false;      // --check: validate the result again before writing it
   std::string stats_file;  // --stats FILE.json

@@ -48,6 +48,7 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
   if (r.computed) {
     j["algorithm"] = to_string(r.cdt.algorithm);  // the one that ran (sweep-plane falls back to the sphere on hulls)
     j["steiner_points"] = r.cdt.steiner_points;
+    j["steiner_points_removed"] = r.cdt.steiner_points_removed;
     j["steiner_rounds"] = r.cdt.steiner_rounds;
     j["facets"] = r.cdt.facets;
     j["facet_flips"] = r.cdt.facet_flips;

@@ -43,7 +43,8 @@ struct CdtStatistics {
   uint64_t simplices = 0;
   uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
   uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
-  uint64_t steiner_points = 0, steiner_rounds = 0;
+  uint64_t steiner_points = 0, steiner_rounds = 0;  // the points the result has; refinement rounds
+  uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
                                          // edge flips that gave each its 2D CDT
   // Paper §6: runs made, one per perturbation order tried (1 unless the vertex-id order found no CDT
@@ -103,6 +104,10 @@ struct Options {
   Algorithm algorithm = Algorithm::SweepSphere;
   SteinerMode steiner = SteinerMode::None;
   FacetMode facets = FacetMode::Triangles;
+  // With Steiner points: delete each again, last added first, when the PLC left still has a CDT
+  // (paper §5 vertex deletion, checked exactly; core/src/edit/remove_steiner.h). Refinement splits
+  // every segment that is not Delaunay, far more than a CDT needs.
+  bool remove_steiner_points = true;
   CdtStatistics* statistics = nullptr;  // filled in when set
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;

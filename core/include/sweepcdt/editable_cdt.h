@@ -11,7 +11,8 @@
 // O(star size · log). A vertex may lie
 //   - inside the domain;
 //   - on constraining simplices, when each group of exactly coplanar ones around it (a sheet of a
-//     facet) has v inside it (any D), or, for D = 3, on a straight edge of it with its two
+//     facet; when the PLC has tags, only simplices with equal tags form one facet — cdt() tags a
+//     refined PLC's triangles with their input triangle or coplanar facet) has v inside it (any D), or, for D = 3, on a straight edge of it with its two
 //     neighbours along that edge (a Steiner point on a segment): the facet without v is then
 //     triangulated anew by the (D-1)-dimensional star CDT of the hole (the paper's recursion),
 //     computed on the facet's projection onto a coordinate hyperplane — exactly the facet's own
@@ -58,6 +59,7 @@ class EditableCdt {
   void remove_vertex(uint32_t v);
 
   bool has_vertex(uint32_t v) const;
+  std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)
   std::size_t num_vertices() const;   // vertices left
   std::size_t num_simplices() const;
 

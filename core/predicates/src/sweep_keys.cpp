@@ -8,6 +8,7 @@
 
 #include "arith.h"
 #include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
 
 namespace sweepcdt::predicates {
 namespace {
@@ -272,10 +273,61 @@ Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Ver
   return (r != Sign::Zero ? r : power_difference_perturbed<D>(s, t, q)) * sigma;
 }
 
+// s and t share a facet f (t's vertices but its apex b). Then Psi_x(s) - Psi_x(t) is an affine
+// function of x that vanishes on aff(f), perturbation included (both perturbed spheres pass through
+// f's lifted points): lambda * orient(f, x). At b it is the perturbed height of b's lifted point over
+// s's lifted hyperplane, negative iff b is inside s's perturbed circumsphere. So the tuple's first
+// non-zero entry belongs to the first delta vertex off aff(f), and its sign needs one perturbed
+// insphere and a few orientations — instead of exact zeros, term by term, whenever a delta vertex
+// lies on aff(f) (the star sweep's centre on a facet through it, seeds on CAD planes).
+// Are a, b, q on one line (a != b)? Every 2x2 minor of (b - a, q - a) vanishes: exact orientations
+// of the projections onto the coordinate planes.
+template <int D>
+bool collinear(const double* a, const double* b, const double* q) {
+  for (int i = 0; i < D; ++i)
+    for (int j = i + 1; j < D; ++j) {
+      const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pq[2] = {q[i], q[j]};
+      if (orient<2>({pa, pb, pq}) != Sign::Zero) return false;
+    }
+  return true;
+}
+
+template <int D>
+Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>& t, int apex, const Vertices<D + 1>& delta) {
+  const auto side = [&](const double* x) {
+    Coords<D + 1> c;
+    for (int j = 0, k = 0; j <= D; ++j)
+      if (j != apex) c[k++] = t[j].x;
+    c[D] = x;
+    return orient<D>(c);
+  };
+  if (cospherical_tie<D>(s, t)) detail::count_tie();  // as the general path counts it (power differences all zero)
+  const Sign lambda = (inside_circumsphere<D>(s, t[apex]) ? Sign::Negative : Sign::Positive) * side(t[apex].x);
+  for (const Vertex& q : delta)
+    if (const Sign o = side(q.x); o != Sign::Zero) return lambda * o;
+  return Sign::Zero;
+}
+
 template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertices<D + 1>& delta) {
+  int apex = -1, others = 0;  // t's vertices not in s
+  for (int j = 0; j <= D; ++j)
+    if (std::none_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == t[j].id; })) apex = j, ++others;
+  if (others == 1) return compare_power_tuples_across<D>(s, t, apex, delta);
+  // Sharing an edge ab, the difference (perturbation included) vanishes at a and b, so on their
+  // line: a delta vertex there gives an exact zero, known without the exact stages (the star
+  // sweep's centre on a segment through a deleted Steiner point, common).
+  const Vertex* edge[2];
+  int shared = 0;
+  for (const Vertex& v : t)
+    if (std::any_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == v.id; }) && shared < 2) edge[shared++] = &v;
+  const bool on_edge_line_possible = D - others + 1 == 2;
   const Sign sigma = orientation_product<D>(s, t, "compare_power_tuples");
   for (int i = 0; i <= D; ++i) {
+    if (on_edge_line_possible && collinear<D>(edge[0]->x, edge[1]->x, delta[i].x)) {
+      if (i == 0 && cospherical_tie<D>(s, t)) detail::count_tie();
+      continue;
+    }
     Sign r = power_difference<D>(s, t, delta[i]);
     if (r == Sign::Zero) {
       if (i == 0 && cospherical_tie<D>(s, t)) detail::count_tie();

@@ -115,7 +115,8 @@ struct EditableCdt<D>::Impl {
     std::vector<Key> keys;
     for (uint32_t c : through) keys.push_back(constraints[c]);
     return detail::sheets_without<D>(
-        v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); });
+        v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); },
+        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; });
   }
 
   void require_vertex(uint32_t v) const {
@@ -446,6 +447,17 @@ void EditableCdt<D>::remove_vertex(uint32_t v) {
 template <int D>
 bool EditableCdt<D>::has_vertex(uint32_t v) const {
   return v < impl_->alive.size() && impl_->alive[v];
+}
+template <int D>
+std::vector<uint32_t> EditableCdt<D>::neighbours(uint32_t v) const {
+  impl_->require_vertex(v);
+  std::vector<uint32_t> link;
+  for (uint32_t t : impl_->star_of(v))
+    for (int i = 0; i <= D; ++i)
+      if (impl_->simplex(t)[i] != v) link.push_back(impl_->simplex(t)[i]);
+  std::sort(link.begin(), link.end());
+  link.erase(std::unique(link.begin(), link.end()), link.end());
+  return link;
 }
 template <int D>
 std::size_t EditableCdt<D>::num_vertices() const {

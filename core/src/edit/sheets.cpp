@@ -9,7 +9,8 @@
 #include "../ids_text.h"
 #include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/predicates/orientation.h"
-#include "sweepcdt/star_cdt.h"
+#include "../sweep/sweep_cdt.h"
+#include "sweepcdt/validate.h"
 
 namespace sweepcdt::detail {
 namespace {
@@ -27,8 +28,8 @@ template <int D>
 class SheetBuilder {
  public:
   SheetBuilder(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v, const std::function<const double*(uint32_t)>& point,
-               const std::function<uint32_t(uint32_t)>& order)
-      : v_(v), through_v_(through_v), point_(point), order_(order) {}
+               const std::function<uint32_t(uint32_t)>& order, const std::function<bool(uint32_t, uint32_t)>& same_facet)
+      : v_(v), through_v_(through_v), point_(point), order_(order), same_facet_(same_facet) {}
 
   std::vector<Sheet<D>> run() {
     // Ridges through v (a constraint without one of its other vertices) -> the constraints on them.
@@ -38,7 +39,7 @@ class SheetBuilder {
         if (through_v_[c][i] != v_) ridges[ridge(c, i)].push_back(c);
     UnionFind sheets(through_v_.size());
     for (const auto& [r, on] : ridges)
-      if (on.size() == 2 && coplanar(on[0], on[1]) && opposite(on[0], on[1], r)) sheets.unite(on[0], on[1]);
+      if (on.size() == 2 && same_facet_(on[0], on[1]) && coplanar(on[0], on[1]) && opposite(on[0], on[1], r)) sheets.unite(on[0], on[1]);
     std::map<uint32_t, Sheet<D>> by_root;
     for (uint32_t c = 0; c < through_v_.size(); ++c) by_root[sheets.find(c)].constraints.push_back(c);
     std::vector<Sheet<D>> result;
@@ -222,9 +223,14 @@ class SheetBuilder {
         for (uint32_t x : r) polytope.simplices.push_back(local[x]);
         polytope.exterior.push_back(o == Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
       }
+      // The polytope is valid by construction (a fan around v, less v), so no PLC check; the
+      // cavity's validation later checks these simplices again as its constraints.
       Triangulation<D - 1> tri;
       try {
-        tri = star_cdt<D - 1>(polytope, centre);
+        CdtStatistics stats;
+        tri = star_sweep_cdt<D - 1>(polytope, centre, Options{}, stats);
+        compute_neighbors(tri);
+        if (!validate(tri, polytope).ok()) throw NoCdtError("its star CDT fails validation", {});
       } catch (const NoCdtError& e) {
         refuse(sheet, std::string("its facet has no CDT without it (") + e.what() + ")");
       }
@@ -243,6 +249,7 @@ class SheetBuilder {
   const std::vector<std::array<uint32_t, D>>& through_v_;
   const std::function<const double*(uint32_t)>& point_;
   const std::function<uint32_t(uint32_t)>& order_;
+  const std::function<bool(uint32_t, uint32_t)>& same_facet_;
 };
 
 }  // namespace
@@ -250,17 +257,22 @@ class SheetBuilder {
 template <int D>
 std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
                                      const std::function<const double*(uint32_t)>& point,
-                                     const std::function<uint32_t(uint32_t)>& order) {
-  return SheetBuilder<D>(v, through_v, point, order).run();
+                                     const std::function<uint32_t(uint32_t)>& order,
+                                     const std::function<bool(uint32_t, uint32_t)>& same_facet) {
+  return SheetBuilder<D>(v, through_v, point, order, same_facet).run();
 }
 
 template std::vector<Sheet<2>> sheets_without<2>(uint32_t, const std::vector<std::array<uint32_t, 2>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
+                                                 const std::function<bool(uint32_t, uint32_t)>&);
 template std::vector<Sheet<3>> sheets_without<3>(uint32_t, const std::vector<std::array<uint32_t, 3>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
+                                                 const std::function<bool(uint32_t, uint32_t)>&);
 template std::vector<Sheet<4>> sheets_without<4>(uint32_t, const std::vector<std::array<uint32_t, 4>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
+                                                 const std::function<bool(uint32_t, uint32_t)>&);
 template std::vector<Sheet<5>> sheets_without<5>(uint32_t, const std::vector<std::array<uint32_t, 5>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&);
+                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
+                                                 const std::function<bool(uint32_t, uint32_t)>&);
 
 }  // namespace sweepcdt::detail

@@ -17,11 +17,13 @@ struct Sheet {
 };
 
 // `through_v`: the constraining simplices holding v; `point(id)` its coordinates; `order(id)` the
-// perturbation order of the points (§6), which the fill's CDT keeps. Throws VertexRemovalError when
+// perturbation order of the points (§6), which the fill's CDT keeps; `same_facet(i, j)` whether
+// through_v[i] and through_v[j] may be one facet (a sheet never joins two that may not). Throws VertexRemovalError when
 // v is a corner of a sheet (or on a sheet boundary this code does not handle: D = 2 or D >= 4).
 template <int D>
 std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
                                      const std::function<const double*(uint32_t)>& point,
-                                     const std::function<uint32_t(uint32_t)>& order);
+                                     const std::function<uint32_t(uint32_t)>& order,
+                                     const std::function<bool(uint32_t, uint32_t)>& same_facet);
 
 }  // namespace sweepcdt::detail

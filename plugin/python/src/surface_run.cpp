@@ -85,6 +85,7 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   s["input_triangles"] = run.input_triangles;
   s["points"] = m.num_points();
   s["steiner_points"] = run.cdt.steiner_points;
+  s["steiner_points_removed"] = run.cdt.steiner_points_removed;
   s["tetrahedra"] = m.num_tetrahedra();
   s["boundary_triangles"] = m.num_boundary();
   s["regions"] = std::set<int32_t>(m.regions.begin(), m.regions.end()).size();

@@ -1,0 +1,17 @@
+// Steiner points the CDT does not need after all (issue 17): refinement (steiner/refine.h) splits
+// every segment that is not Delaunay, but a CDT often exists without many of those points. Each is
+// deleted again (paper §5, EditableCdt) when the PLC left still has a CDT — the deletion checks
+// that exactly and is undone otherwise — last added first, in passes until one deletes nothing.
+#pragma once
+#include <cstdint>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::detail {
+
+// `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner
+// points); both are replaced by the result. Returns the number of points deleted. Throws
+// CancelledError when `options.progress` says so.
+uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const Options& options);
+
+}  // namespace sweepcdt::detail
