@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "../box_tree.h"
+#include "split_of_two.h"
 #include "sweepcdt/predicates.h"
 #include "sweepcdt/steiner_point.h"
 
@@ -29,20 +30,6 @@ class Splits {
   // Is s a point that refine can make on the segment ab: the rounded a + t (b - a), or b + t (a - b),
   // for some t in (0, 1)? Exact (sweepcdt/steiner_point.h).
   bool is_split(uint32_t s, uint32_t a, uint32_t b) const { return is_point_on_segment(p(a), p(b), p(s)); }
-
-  // Is s the split point of two of `candidates`? Only pairs whose box holds s can be.
-  bool splits_two_of(uint32_t s, const std::vector<uint32_t>& candidates) const {
-    const double* ps = p(s);
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-      for (std::size_t j = i + 1; j < candidates.size(); ++j) {
-        const double* a = p(candidates[i]);
-        const double* b = p(candidates[j]);
-        bool inside = true;
-        for (int c = 0; c < 3 && inside; ++c) inside = std::min(a[c], b[c]) <= ps[c] && ps[c] <= std::max(a[c], b[c]);
-        if (inside && is_split(s, candidates[i], candidates[j])) return true;
-      }
-    return false;
-  }
 
  private:
   std::span<const double> points_;
@@ -90,7 +77,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     });
     if (on.empty())  // a fold point
       facet_tree.for_each_overlap(at, [&](uint32_t f) {
-        if (splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
+        if (is_split_of_two(points, s, r.on_facet[f])) on.push_back(f);
       });
     std::sort(on.begin(), on.end());
     on.erase(std::unique(on.begin(), on.end()), on.end());
