@@ -81,6 +81,7 @@ void compare_on_mesh(const Plc<3>& input, const Triangulation<3>& tri, FacetMode
       tally.splits += expected;
       if (expected) split_on.push_back(f);
     });
+    // locate_points() tries the points nearest s first (surface_points.cpp), then all of them.
     std::sort(split_on.begin(), split_on.end());
     if (!on_ridge[s]) EXPECT_EQ(located.facets_of[s], split_on) << what << ": fold point " << s;
   }
