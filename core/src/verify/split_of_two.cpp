@@ -38,6 +38,9 @@
 namespace sweepcdt::detail {
 namespace {
 
+// The bound above: candidates nearer x than 2^kNear (S + 2R) are tried with every other one; the
+// others' keys differ by less than kWindow when they split x.
+constexpr int kNear = -33;
 constexpr double kWindow = 0x1p-14;
 
 // The direction of the line through 0 and (x, y) ≠ (0, 0) as a number in [0, 2): its angle θ in
@@ -74,7 +77,7 @@ bool is_split_of_two(std::span<const double> points, uint32_t s, std::span<const
 
   double reach = 0;  // R
   for (uint32_t c : candidates) reach = std::max({reach, std::abs(p(c)[i] - x[i]), std::abs(p(c)[j] - x[j])});
-  const double rho = std::max(std::ldexp(std::max(std::abs(x[i]), std::abs(x[j])) + 2 * reach, -33), 0x1p-1000);
+  const double rho = std::max(std::ldexp(std::max(std::abs(x[i]), std::abs(x[j])) + 2 * reach, kNear), 0x1p-1000);
   if (!std::isfinite(rho)) {  // coordinates near overflow: no bound, every pair
     for (std::size_t a = 0; a < candidates.size(); ++a)
       for (std::size_t b = a + 1; b < candidates.size(); ++b)
