@@ -1,10 +1,11 @@
 // The fold-point search of the verification (core/src/verify/split_of_two.h) against the search it
 // replaced, kept here as the oracle: every pair of candidates tried with the exact test. They must
 // give the same answer for every point and candidate set: the Steiner points of meshes cdt() makes
-// with fold points (CAD parts, and the same parts jittered so that no face is flat), each against
-// the points of every facet whose box holds it, as the verification asks; and made-up sets on an
-// inclined plane, with split points at every distance from their ends, nudged by one ulp, and on
-// lines near the direction where the search's keys wrap around.
+// (CAD parts, one with fold points), each against the points of every facet whose box holds it, as
+// the verification asks of a fold point; and made-up sets on an inclined plane, with split points
+// at every distance from their ends, nudged by one ulp, and on lines near the direction where the
+// search's keys wrap around (only these catch a window too narrow, a missing wrap-around, or near
+// points left out).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,9 +98,11 @@ io::Soup jittered(io::Soup soup, uint64_t seed) {
   return soup;
 }
 
-// Folds that refine split (thingi_1706459.stl, in the shared data: refine.cpp names it), points
-// that a mesh made with --facets triangles has on input edges inside coplanar facets (fold points
-// when checked as coplanar: flange_std.stl), and a CAD part jittered so that no face is flat.
+// Points that a mesh made with --facets triangles has on input edges inside coplanar facets, fold
+// points when checked as coplanar (flange_std.stl: 338); a CAD part jittered so that no face is
+// flat; thingi_1706459.stl, in the shared data, whose folds refine.cpp had to split before shell
+// radii were rounded to 20 bits (its 10555 Steiner points now all lie on ridges: each is still
+// asked about every facet whose box holds it).
 TEST(VerifySplitOfTwo, AgreesWithEveryPairOnMeshesWithFoldPoints) {
   struct Case {
     std::string file;
