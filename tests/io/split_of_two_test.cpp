@@ -100,9 +100,10 @@ io::Soup jittered(io::Soup soup, uint64_t seed) {
 
 // Points that a mesh made with --facets triangles has on input edges inside coplanar facets, fold
 // points when checked as coplanar (flange_std.stl: 338); a CAD part jittered so that no face is
-// flat; thingi_1706459.stl, in the shared data, whose folds refine.cpp had to split before shell
-// radii were rounded to 20 bits (its 10555 Steiner points now all lie on ridges: each is still
-// asked about every facet whose box holds it).
+// flat; in the shared data, femur.off jittered (2 fold points that refine split, among 1166
+// Steiner points), and thingi_1706459.stl, whose folds refine.cpp had to split before shell radii
+// were rounded to 20 bits (its 10555 Steiner points now all lie on ridges: each is still asked
+// about every facet whose box holds it).
 TEST(VerifySplitOfTwo, AgreesWithEveryPairOnMeshesWithFoldPoints) {
   struct Case {
     std::string file;
@@ -112,8 +113,11 @@ TEST(VerifySplitOfTwo, AgreesWithEveryPairOnMeshesWithFoldPoints) {
   const std::string cad = std::string(SWEEPCDT_TEST_DATA) + "/cad/";
   std::vector<Case> cases{{cad + "flange_std.stl", false, FacetMode::Triangles, FacetMode::Coplanar},
                           {cad + "rotated_box_std.obj", true, FacetMode::Coplanar, FacetMode::Coplanar}};
-  const std::string thingi = std::string(SWEEPCDT_SHARED_DATA) + "/stl_binary/thingi_1706459.stl";
-  if (std::filesystem::exists(thingi)) cases.push_back({thingi, false, FacetMode::Coplanar, FacetMode::Coplanar});
+  const std::string shared = std::string(SWEEPCDT_SHARED_DATA) + "/";
+  if (std::filesystem::exists(shared + "MANIFEST.md")) {
+    cases.push_back({shared + "off/femur.off", true, FacetMode::Coplanar, FacetMode::Coplanar});
+    cases.push_back({shared + "stl_binary/thingi_1706459.stl", false, FacetMode::Coplanar, FacetMode::Coplanar});
+  }
   Tally tally;
   for (const Case& c : cases) {
     const io::Soup soup = io::read_soup(c.file);
