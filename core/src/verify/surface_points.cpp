@@ -1,8 +1,11 @@
 #include "surface_points.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "../box_tree.h"
+#include "split_of_two.h"
 #include "sweepcdt/predicates.h"
 #include "sweepcdt/steiner_point.h"
 
@@ -30,22 +33,57 @@ class Splits {
   // for some t in (0, 1)? Exact (sweepcdt/steiner_point.h).
   bool is_split(uint32_t s, uint32_t a, uint32_t b) const { return is_point_on_segment(p(a), p(b), p(s)); }
 
-  // Is s the split point of two of `candidates`? Only pairs whose box holds s can be.
-  bool splits_two_of(uint32_t s, const std::vector<uint32_t>& candidates) const {
-    const double* ps = p(s);
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-      for (std::size_t j = i + 1; j < candidates.size(); ++j) {
-        const double* a = p(candidates[i]);
-        const double* b = p(candidates[j]);
-        bool inside = true;
-        for (int c = 0; c < 3 && inside; ++c) inside = std::min(a[c], b[c]) <= ps[c] && ps[c] <= std::max(a[c], b[c]);
-        if (inside && is_split(s, candidates[i], candidates[j])) return true;
+ private:
+  std::span<const double> points_;
+};
+
+// Fold points: is s the split of two points placed on facet f so far? is_split_of_two() answers
+// exactly in O(k log k) for the facet's k points — for every fold point of a facet that is still
+// quadratic overall. So the points of f nearest s are tried first, found with a BoxTree of all
+// the mesh's points in boxes around s growing fourfold: refine splits a fold between the ends of
+// a current edge (core/src/steiner/refine.cpp, add_split_point), which usually have few points of
+// the facet placed before s nearer than they are. A pair among them settles it, being two points
+// of f; only when none splits s (and always for a facet whose box holds s but which s is not on)
+// are all of f's points searched, so the answer is is_split_of_two() of all of them.
+class FoldSearch {
+ public:
+  explicit FoldSearch(std::span<const double> points) : points_(points) {}
+
+  bool splits_two_of(uint32_t s, uint32_t f, const SurfacePoints& r, const Box<3>& facet_box) {
+    if (!tree_) tree_.emplace(point_boxes());  // only meshes with fold points need it
+    const double* ps = points_.data() + 3 * std::size_t{s};
+    double extent = 0;
+    for (int c = 0; c < 3; ++c) extent = std::max(extent, facet_box.hi[c] - facet_box.lo[c]);
+    std::size_t tried = 0;
+    for (double half = std::ldexp(extent, -16); half < extent; half *= 4) {
+      Box<3> around;
+      for (int c = 0; c < 3; ++c) around.lo[c] = ps[c] - half, around.hi[c] = ps[c] + half;
+      nearby_.clear();
+      tree_->for_each_overlap(around, [&](uint32_t w) {
+        if (w < s && std::binary_search(r.facets_of[w].begin(), r.facets_of[w].end(), f)) nearby_.push_back(w);
+      });
+      if (nearby_.size() > kMostNearby) break;
+      if (nearby_.size() > tried && nearby_.size() >= 2) {
+        tried = nearby_.size();
+        if (is_split_of_two(points_, s, nearby_)) return true;
       }
-    return false;
+    }
+    return is_split_of_two(points_, s, r.on_facet[f]);
   }
 
  private:
+  static constexpr std::size_t kMostNearby = 512;  // beyond this many, search the whole facet
+
+  std::vector<Box<3>> point_boxes() const {
+    std::vector<Box<3>> boxes(points_.size() / 3);
+    for (std::size_t v = 0; v < boxes.size(); ++v)
+      for (int c = 0; c < 3; ++c) boxes[v].lo[c] = boxes[v].hi[c] = points_[3 * v + c];
+    return boxes;
+  }
+
   std::span<const double> points_;
+  std::optional<BoxTree<3>> tree_;
+  std::vector<uint32_t> nearby_;
 };
 
 }  // namespace
@@ -74,6 +112,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
   }
   const BoxTree<3> ridge_tree(std::move(ridge_boxes)), facet_tree(std::move(facet_boxes));
   const Splits splits(points);
+  FoldSearch folds(points);
 
   for (uint32_t s = n; s < total; ++s) {
     const double* ps = splits.p(s);
@@ -90,7 +129,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     });
     if (on.empty())  // a fold point
       facet_tree.for_each_overlap(at, [&](uint32_t f) {
-        if (splits.splits_two_of(s, r.on_facet[f])) on.push_back(f);
+        if (folds.splits_two_of(s, f, r, facet_tree.box(f))) on.push_back(f);
       });
     std::sort(on.begin(), on.end());
     on.erase(std::unique(on.begin(), on.end()), on.end());

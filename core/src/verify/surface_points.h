@@ -11,7 +11,9 @@
 //     inside that facet. So do points on input edges inside a coplanar facet: a fold along one, or
 //     a mesh made with --facets triangles checked as coplanar.
 // Rounding is monotone, so a split point stays in the box of its two points: only the ridges and
-// facets whose box holds it are tried.
+// facets whose box holds it are tried. A facet's k points are not tried in pairs for a fold point
+// (k²/2 exact tests, for each of the facet's fold points): split_of_two.h gives the same answer in
+// O(k log k), tried first on the points nearest the fold point (surface_points.cpp).
 #pragma once
 #include <cstddef>
 #include <cstdint>
