@@ -15,6 +15,7 @@
 #include "progress.h"
 #include "report.h"
 #include "stats.h"
+#include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/io/plc_file.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "usage.h"
@@ -46,9 +47,46 @@ std::optional<OutputFormat> format_of(const std::string& file) {
   return std::nullopt;
 }
 
+// --delete: the listed vertices leave the CDT one by one (paper §5; sweepcdt/editable_cdt.h). A
+// vertex that cannot go — no CDT without it, a corner of a facet, not a vertex — stays, with a
+// warning saying why; the others go on.
+// "3,17,42": vertex ids in the PLC file's order, from 0.
+std::vector<uint32_t> parse_vertex_list(const std::string& text) {
+  std::vector<uint32_t> ids;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string word = text.substr(at, comma - at);
+    if (word.empty() || word.find_first_not_of("0123456789") != std::string::npos || word.size() > 9)
+      throw UsageError("--delete takes vertex ids separated by commas (e.g. 3,17,42), not '" + text + "'");
+    ids.push_back(static_cast<uint32_t>(std::stoul(word)));
+    at = comma + 1;
+  }
+  return ids;
+}
+
+template <int D>
+void delete_vertices(Triangulation<D>& tri, Plc<D>& plc, const std::vector<uint32_t>& ids, FileResult& r) {
+  EditableCdt<D> mesh(std::move(plc), std::move(tri));
+  std::size_t deleted = 0;
+  for (uint32_t v : ids) {
+    try {
+      mesh.remove_vertex(v);
+      ++deleted;
+    } catch (const Error& e) {
+      r.warnings.push_back(r.input + ": vertex " + std::to_string(v) + " kept: " + e.what());
+    }
+  }
+  r.warnings.push_back(r.input + ": " + std::to_string(deleted) + " of " + std::to_string(ids.size()) +
+                       " vertices deleted (--delete; the output numbers the vertices left in their order)");
+  auto snapshot = mesh.snapshot();
+  tri = std::move(snapshot.triangulation);
+  plc = std::move(snapshot.plc);
+}
+
 template <int D>
 void triangulate(const Plc<D>& plc, const std::string& output, const OutputFormat& format, const RunOptions& options,
-                 FileProgress& progress, FileResult& r, bool& writing) {
+                 const std::vector<uint32_t>& to_delete, FileProgress& progress, FileResult& r, bool& writing) {
   r.dimension = D;
   r.input_points = plc.num_points();
   r.input_simplices = plc.num_simplices();
@@ -61,7 +99,14 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
     throw UsageError("--steiner auto is for 3D PLCs; this one is " + std::to_string(D) + "-dimensional");
   const Options cdt_options = core_options(options, &r.cdt, progress.callback());
   Plc<D> triangulated;
-  const Triangulation<D> tri = cdt(plc, cdt_options, &triangulated);
+  Triangulation<D> tri = cdt(plc, cdt_options, &triangulated);
+  if (!to_delete.empty()) {
+    for (uint32_t v : to_delete)
+      if (v >= plc.num_points())
+        throw UsageError("--delete: vertex " + std::to_string(v) + " does not exist (" + std::to_string(plc.num_points()) + " points, numbered from 0)");
+    progress.phase("deleting vertices");
+    delete_vertices(tri, triangulated, to_delete, r);
+  }
   r.computed = true;
   r.simplices = tri.num_simplices();
   if (options.check && !check_before_writing(tri, triangulated, progress, r)) return;
@@ -88,6 +133,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
   std::string input, output;
   std::optional<OutputFormat> format;
   RunOptions options;
+  std::vector<uint32_t> to_delete;
   options.steiner = SteinerMode::None;  // a PLC is meant exactly as given; Steiner points on request
   options.facets = FacetMode::Triangles;  // its simplices are the constraints, as given
   try {
@@ -102,6 +148,8 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
       else if (args.value("--format", v)) {
         format = format_named(v);
         if (!format) throw UsageError("unknown --format '" + v + "' (node, simplices; 3D: mesh, vtu, msh, msh22, tetgen, inp)");
+      } else if (args.value("--delete", v)) {
+        to_delete = parse_vertex_list(v);
       } else if (read_run_option(args, options)) {
       } else if (args.at_option()) throw UsageError("unknown option '" + args.peek() + "'");
       else if (input.empty()) input = args.take();
@@ -130,7 +178,7 @@ int run_cdt(const std::vector<std::string>& words, std::ostream& out, std::ostre
       progress.phase("reading");
       const io::AnyPlc plc = io::read_plc_file(input);
       r.seconds_read = since(start);
-      std::visit([&](const auto& p) { triangulate(p, output, *format, options, progress, r, writing); }, plc);
+      std::visit([&](const auto& p) { triangulate(p, output, *format, options, to_delete, progress, r, writing); }, plc);
     } catch (const UsageError& e) {
       console.line(std::string("sweepcdt: ") + e.what());
       return kUsage;

@@ -104,7 +104,7 @@ std::string check_help() {
 
 std::string cdt_usage() {
   return "usage: sweepcdt cdt FILE -o OUTPUT [--format F] [--algorithm A] [--steiner none|auto] [--check]\n"
-         "                   [--stats FILE.json] [--quiet]\n";
+         "                   [--delete IDS] [--stats FILE.json] [--quiet]\n";
 }
 
 std::string cdt_help() {
@@ -117,6 +117,13 @@ std::string cdt_help() {
          "  --steiner none|auto none (default): the PLC exactly; auto: Steiner points (3D only)\n"
          "  --check             validate() the result exactly once more before writing; refuse (exit 6)\n"
          "                      if not valid\n"
+         "  --delete IDS        then delete these vertices (ids from 0 in FILE's order, e.g. 3,17,42) from\n"
+         "                      the CDT and the PLC, one by one (paper §5): a vertex inside the domain or\n"
+         "                      inside a facet (which is re-triangulated; in 3D also on a straight edge\n"
+         "                      of one) goes when a CDT exists without it; the others stay, each with a\n"
+         "                      warning saying why (simplices with different tags — Triangle segment\n"
+         "                      markers, TetGen facet markers — are different facets, never merged).\n"
+         "                      The output numbers the vertices left in their order\n"
          "  --algorithm, --stats, --quiet   as for `mesh`\n"
          "\n" +
          exit_codes_text();

@@ -152,5 +152,54 @@ TEST(CliCdt, FailuresHaveTheirExitCodes) {
   EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"bad.plc", "cross.plc", "prism.plc", "p.mesh"}));
 }
 
+// The triangles of a .ele file, each as its sorted vertex ids.
+std::set<std::vector<int>> triangles_of(const fs::path& ele) {
+  std::ifstream in(ele);
+  std::size_t count = 0;
+  int per = 0, attributes = 0;
+  in >> count >> per >> attributes;
+  std::set<std::vector<int>> set;
+  for (std::size_t k = 0; k < count; ++k) {
+    int index = 0;
+    std::vector<int> t(per);
+    in >> index;
+    for (int& v : t) in >> v;
+    for (double skip = 0, a = 0; a < attributes; ++a) in >> skip;
+    std::sort(t.begin(), t.end());
+    set.insert(t);
+  }
+  return set;
+}
+
+// --delete: a 4 x 4 square whose bottom side has a midpoint (4) and three points inside. Deleting the
+// midpoint and one inside point gives the CDT of the square without them, computed from scratch; a
+// corner and a missing id are refused (a warning; a usage error). The bottom's two segments carry
+// one marker (one facet); without markers each segment would be its own facet and the midpoint a
+// corner of both.
+TEST(CliCdt, DeleteVertices) {
+  TempDir dir;
+  const auto poly = dir.write("square.poly",
+                              "8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 2 0\n6 1 1\n7 2 3\n8 3 1\n"
+                              "5 1\n1 1 5 7\n2 5 2 7\n3 2 3 8\n4 3 4 8\n5 4 1 8\n0\n");
+  const auto without = dir.write("without.poly",
+                                 "6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 1\n"
+                                 "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+  const CliRun r = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "d.node") + " --delete 4,6,0 --check", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(r.says("vertex 0 kept: vertex 0 cannot be deleted")) << r.out;
+  EXPECT_TRUE(r.says("2 of 3 vertices deleted")) << r.out;
+  const CliRun ref = run("cdt " + quoted(without) + " -o " + quoted(dir.path() / "w.node"), dir);
+  ASSERT_EQ(ref.exit_code, 0) << ref.out;
+  EXPECT_EQ(first_count(dir.path() / "d.node"), 6u);
+  EXPECT_EQ(triangles_of(dir.path() / "d.ele"), triangles_of(dir.path() / "w.ele"));
+
+  const CliRun missing = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "e.node") + " --delete 8", dir);
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+  EXPECT_TRUE(missing.says("--delete: vertex 8 does not exist")) << missing.out;
+  const CliRun bad = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "e.node") + " --delete 1,x", dir);
+  EXPECT_EQ(bad.exit_code, 2) << bad.out;
+  EXPECT_FALSE(fs::exists(dir.path() / "e.node"));
+}
+
 }  // namespace
 }  // namespace sweepcdt::cli::testing
