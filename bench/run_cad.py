@@ -11,12 +11,18 @@ whole process (reading and writing included) for
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
 Usage: bench/run_cad.py [--build BUILD] [--repeat N] [FILE...]
+       bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj and the closed shared meshes)
+
+With --before, only the default command is timed, of both builds in turn (before, after, before,
+after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
+pairwise ratios after/before, which holds up on a shared machine better than two separate medians.
 """
 import argparse
 import glob
 import json
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -33,7 +39,8 @@ TIMEOUT = 600
 
 
 def timed(cmd, cwd):
-    """(ok, seconds, peak MiB) of one run of cmd under /usr/bin/time."""
+    """(ok, seconds, peak MiB) of one run of cmd under /usr/bin/time; timed.cpu: its CPU seconds."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     try:
         p = subprocess.run(["/usr/bin/time", "-f", "%M"] + cmd, cwd=cwd, stdout=subprocess.DEVNULL,
@@ -41,6 +48,8 @@ def timed(cmd, cwd):
     except subprocess.TimeoutExpired:
         return False, float(TIMEOUT), 0.0
     seconds = time.monotonic() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    timed.cpu = (after.ru_utime + after.ru_stime) - (usage.ru_utime + usage.ru_stime)
     lines = p.stderr.strip().splitlines()
     peak = int(lines[-1]) / 1024 if lines and lines[-1].isdigit() else 0.0
     return p.returncode == 0, seconds, peak
@@ -59,7 +68,7 @@ def run_sweepcdt(cli, path, work, extra):
     for f in (out, stats):
         if os.path.exists(f):
             os.remove(f)
-    return {"ok": ok, "seconds": seconds, "peak": peak, "points": points, "message": message}
+    return {"ok": ok, "seconds": seconds, "cpu": timed.cpu, "peak": peak, "points": points, "message": message}
 
 
 def run_tetgen(work, switches, input_points):
@@ -90,20 +99,51 @@ def cell(r):
     return str(r["points"]), f"{r['seconds']:.2f}", f"{r['peak']:.0f}"
 
 
+def paired(before_cli, cli, files, pairs):
+    """Default command of two builds in turn; per input the median wall and CPU seconds of each and
+    the medians of the pairwise ratios after/before (CPU time is the steadier on a loaded machine)."""
+    print("| input | before wall s | after wall s | wall after/before | before CPU s | after CPU s | "
+          "CPU after/before (min–max of pairs) | exit before/after |")
+    print("|---|---|---|---|---|---|---|---|")
+    walls, cpus = [], []
+    with tempfile.TemporaryDirectory() as work:
+        for path in files:
+            a, b = [], []
+            for _ in range(pairs):
+                b.append(run_sweepcdt(before_cli, path, work, []))
+                a.append(run_sweepcdt(cli, path, work, []))
+            wall = [x["seconds"] / y["seconds"] for x, y in zip(a, b)]
+            cpu = [x["cpu"] / y["cpu"] for x, y in zip(a, b)]
+            walls.append(statistics.median(wall))
+            cpus.append(statistics.median(cpu))
+            med = lambda runs, key: statistics.median(r[key] for r in runs)
+            print(f"| {os.path.basename(path)} | {med(b, 'seconds'):.3f} | {med(a, 'seconds'):.3f} | {walls[-1]:.2f}x | "
+                  f"{med(b, 'cpu'):.3f} | {med(a, 'cpu'):.3f} | {cpus[-1]:.2f}x ({min(cpu):.2f}–{max(cpu):.2f}) | "
+                  f"{'ok' if b[0]['ok'] else 'fails'}/{'ok' if a[0]['ok'] else 'fails'} |", flush=True)
+    print()
+    print(f"geometric means over {len(files)} inputs: wall {statistics.geometric_mean(walls):.3f}x, "
+          f"CPU {statistics.geometric_mean(cpus):.3f}x")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--before", help="a second build: time the default command of both, paired")
+    ap.add_argument("--repeat", type=int)
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
     cli = os.path.join(args.build, "plugin", "cli", "sweepcdt")
     converter = os.path.join(args.build, "bench", "steiner_bench")
-    if not shutil.which("tetgen"):
-        sys.exit("tetgen not found (scripts/setup.sh installs it)")
     files = args.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.stl")) +
                                  glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.obj"))) + \
         [os.path.join(SHARED, f) for f in SHARED_CLOSED if os.path.exists(os.path.join(SHARED, f))]
+    if args.before:
+        paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
+        return
+    args.repeat = args.repeat or 1
+    if not shutil.which("tetgen"):
+        sys.exit("tetgen not found (scripts/setup.sh installs it)")
     print("| input | triangles | sweepcdt default: points | s | MiB | --facets triangles: points | s | "
           "tetgen -pQ: points | s | MiB | tetgen -pQM: points | s | points default/-pQ | time default/-pQ | memory default/-pQ |")
     print("|" + "---|" * 16)

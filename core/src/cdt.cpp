@@ -197,6 +197,7 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   CdtStatistics& stats = options.statistics ? *options.statistics : local;
   stats = {};
   Stopwatch clock;
+  stats.check_recorded = plc.checked && plc.checked->covers(plc);
   check(plc);
   stats.seconds_check = clock.lap();
   return run_with_retries(plc, options, stats, clock, triangulated);

@@ -144,10 +144,20 @@ class GiftWrapper {
     return PlcError({{PlcProblemKind::LowerDimensional, {}, "the points do not span E^" + std::to_string(D)}}, 1);
   }
 
-  // The growth procedure: among vertices strictly on f's positive side, the first touched by a sphere
-  // through f expanding from the negative side. "w touched before v" = w inside the (perturbed)
-  // circumsphere of conv(f ∪ v), a transitive order, so one scan finds the first.
+  // The growth procedure: among vertices strictly on f's positive side whose simplex with f is clean
+  // (its interior meets no constraining simplex), the first touched by a sphere through f expanding
+  // from the negative side. "w touched before v" = w inside the (perturbed) circumsphere of
+  // conv(f ∪ v), a strict total order, so one scan finds the first. The first of all candidates is
+  // found first, without the clean test: it is usually clean (then it is the answer), and scanning
+  // with the clean test from the start costs one clean test per improvement, of big early simplices
+  // whose boxes meet many constraints. Only when it is not clean does the full scan run.
   uint32_t grow(const Key<D>& f) const {
+    const uint32_t first = first_touched(f, false);
+    if (first == kNone || clean(f, first)) return first;
+    return first_touched(f, true);
+  }
+
+  uint32_t first_touched(const Key<D>& f, bool clean_only) const {
     uint32_t best = kNone;
     predicates::Vertices<D + 1> s;
     for (int i = 0; i < D; ++i) s[i] = {plc_.point(f[i]), f[i]};
@@ -155,7 +165,7 @@ class GiftWrapper {
       if (std::count(f.begin(), f.end(), w)) continue;  // a vertex of f: flat, and exact zeros are slow
       if (predicates::orient<D>(with_apex(f, w)) != Sign::Positive) continue;
       if (best != kNone && !predicates::inside_circumsphere<D>(s, {plc_.point(w), w})) continue;
-      if (!clean(f, w)) continue;
+      if (clean_only && !clean(f, w)) continue;
       best = w;
       s[D] = {plc_.point(w), w};
     }

@@ -1,6 +1,7 @@
 // Plc<D>::facet_bounded, find_problems() and check(): exact validation of a PLC (paper §1).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <numeric>
 #include <string>
@@ -181,14 +182,26 @@ bool Plc<D>::facet_bounded() const {
 }
 
 template <int D>
-std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total) {
+bool PlcCheck<D>::covers(const Plc<D>& plc) const {
+  // Bitwise: the checks' answers depend on the exact coordinates (a NaN or a -0.0 compares as itself).
+  return plc.points.size() == points_.size() && plc.simplices == simplices_ &&
+         (points_.empty() || std::memcmp(plc.points.data(), points_.data(), points_.size() * sizeof(double)) == 0);
+}
+
+template <int D>
+std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total,
+                                      std::shared_ptr<const PlcCheck<D>>* record) {
   ProblemList problems(limit_per_kind);
-  if (check_structure(plc, problems)) {
+  if (check_structure(plc, problems) && !(plc.checked && plc.checked->covers(plc))) {
     check_duplicate_points(plc, problems);
     const auto usable = check_simplex_shapes(plc, problems);
     check_intersections(plc, usable, problems);
   }
   if (total) *total = problems.total();
+  if (record) {
+    record->reset();
+    if (problems.total() == 0) record->reset(new PlcCheck<D>(plc.points, plc.simplices));
+  }
   return problems.take();
 }
 
@@ -201,7 +214,9 @@ void check(const Plc<D>& plc) {
 
 #define SWEEPCDT_INSTANTIATE(D)                                                                    \
   template struct Plc<D>;                                                                          \
-  template std::vector<PlcProblem> find_problems<D>(const Plc<D>&, std::size_t, uint64_t*);       \
+  template class PlcCheck<D>;                                                                      \
+  template std::vector<PlcProblem> find_problems<D>(const Plc<D>&, std::size_t, uint64_t*,        \
+                                                    std::shared_ptr<const PlcCheck<D>>*);          \
   template void check<D>(const Plc<D>&);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)

@@ -66,16 +66,32 @@ bool coplanar_point_in_triangle(P p, P a, P b, P c) {
   return point_in_triangle_2d(p2.data(), a2.data(), b2.data(), c2.data());
 }
 
-bool segment_meets_triangle_3d(P p, P q, P a, P b, P c) {
-  const Sign op = orient3(a, b, c, p), oq = orient3(a, b, c, q);
+// A triangle with what the segment tests against it reuse: its vertices and, once asked for, the
+// projection its plane maps one-to-one under.
+struct Triangle3 {
+  P a, b, c;
+  mutable int drop = -1;
+  PlaneProjection projection() const {
+    if (drop < 0) drop = projection_of(a, b, c).drop;
+    return {drop};
+  }
+};
+
+// Segment pq against triangle t, given op = orient3(t, p) and oq = orient3(t, q): the triangle-pair
+// tests below compute each vertex's side of the other triangle's plane once, not once per edge.
+bool segment_meets_triangle_3d(P p, P q, const Triangle3& t, Sign op, Sign oq) {
+  const P a = t.a, b = t.b, c = t.c;
   if (op == oq && op != Sign::Zero) return false;
   if (op == Sign::Zero && oq == Sign::Zero) {
-    const PlaneProjection pr = projection_of(a, b, c);
+    const PlaneProjection pr = t.projection();
     const auto p2 = pr.project(p), q2 = pr.project(q), a2 = pr.project(a), b2 = pr.project(b), c2 = pr.project(c);
     return segment_meets_triangle_2d(p2.data(), q2.data(), a2.data(), b2.data(), c2.data());
   }
-  if (op == Sign::Zero) return coplanar_point_in_triangle(p, a, b, c);
-  if (oq == Sign::Zero) return coplanar_point_in_triangle(q, a, b, c);
+  if (op == Sign::Zero || oq == Sign::Zero) {
+    const PlaneProjection pr = t.projection();
+    const auto x2 = pr.project(op == Sign::Zero ? p : q), a2 = pr.project(a), b2 = pr.project(b), c2 = pr.project(c);
+    return point_in_triangle_2d(x2.data(), a2.data(), b2.data(), c2.data());
+  }
   return consistent(orient3(p, q, a, b), orient3(p, q, b, c), orient3(p, q, c, a));
 }
 
@@ -116,17 +132,34 @@ bool improper_3d(std::array<P, 3> a, std::array<uint32_t, 3> ida, std::array<P, 
   const int shared = shared_count<3>(ida, idb);
   if (shared == 3) return true;
   shared_first<3>(a, ida, b, idb);
+  const Triangle3 ta{a[0], a[1], a[2]}, tb{b[0], b[1], b[2]};
+  // Sides of b's plane for a's vertices, and of a's plane for b's. When a lies in b's plane (all
+  // zero), the planes are equal (a is not degenerate), so b's vertices are all on a's plane too: the
+  // coplanar pairs of flat CAD faces cost 3 exact orientations, not 12.
+  const auto sides = [](const Triangle3& t, P x) { return orient3(t.a, t.b, t.c, x); };
+  const auto all_zero = [](const std::array<Sign, 3>& s) { return s[0] == Sign::Zero && s[1] == Sign::Zero && s[2] == Sign::Zero; };
   switch (shared) {
-    case 0:  // any contact at all
-      return segment_meets_triangle_3d(a[0], a[1], b[0], b[1], b[2]) ||
-             segment_meets_triangle_3d(a[1], a[2], b[0], b[1], b[2]) ||
-             segment_meets_triangle_3d(a[2], a[0], b[0], b[1], b[2]) ||
-             segment_meets_triangle_3d(b[0], b[1], a[0], a[1], a[2]) ||
-             segment_meets_triangle_3d(b[1], b[2], a[0], a[1], a[2]) ||
-             segment_meets_triangle_3d(b[2], b[0], a[0], a[1], a[2]);
-    case 1:  // sharing vertex v = a[0] = b[0]: a contact away from v reaches an opposite edge
-      return segment_meets_triangle_3d(a[1], a[2], b[0], b[1], b[2]) ||
-             segment_meets_triangle_3d(b[1], b[2], a[0], a[1], a[2]);
+    case 0: {  // any contact at all
+      // A triangle strictly on one side of the other's plane cannot meet it.
+      const auto one_side = [](const std::array<Sign, 3>& s) { return s[0] != Sign::Zero && s[0] == s[1] && s[1] == s[2]; };
+      const std::array<Sign, 3> sa{sides(tb, a[0]), sides(tb, a[1]), sides(tb, a[2])};
+      if (one_side(sa)) return false;
+      const std::array<Sign, 3> sb = all_zero(sa) ? sa : std::array<Sign, 3>{sides(ta, b[0]), sides(ta, b[1]), sides(ta, b[2])};
+      if (one_side(sb)) return false;
+      return segment_meets_triangle_3d(a[0], a[1], tb, sa[0], sa[1]) ||
+             segment_meets_triangle_3d(a[1], a[2], tb, sa[1], sa[2]) ||
+             segment_meets_triangle_3d(a[2], a[0], tb, sa[2], sa[0]) ||
+             segment_meets_triangle_3d(b[0], b[1], ta, sb[0], sb[1]) ||
+             segment_meets_triangle_3d(b[1], b[2], ta, sb[1], sb[2]) ||
+             segment_meets_triangle_3d(b[2], b[0], ta, sb[2], sb[0]);
+    }
+    case 1: {  // sharing vertex v = a[0] = b[0]: a contact away from v reaches an opposite edge
+      const Sign a1 = sides(tb, a[1]), a2 = sides(tb, a[2]);
+      if (segment_meets_triangle_3d(a[1], a[2], tb, a1, a2)) return true;
+      const bool coplanar = a1 == Sign::Zero && a2 == Sign::Zero;  // a[0] = b[0] lies in b's plane too
+      const Sign b1 = coplanar ? Sign::Zero : sides(ta, b[1]), b2 = coplanar ? Sign::Zero : sides(ta, b[2]);
+      return segment_meets_triangle_3d(b[1], b[2], ta, b1, b2);
+    }
     default: {  // sharing edge a[0]a[1]: improper iff coplanar with both apexes on the same side
       if (orient3(a[0], a[1], a[2], b[2]) != Sign::Zero) return false;
       const PlaneProjection pr = projection_of(a[0], a[1], a[2]);

@@ -261,7 +261,9 @@ class Inspector {
       triangle_of.push_back(t);
     }
     uint64_t total = 0;
-    const auto problems = find_problems(plc, limit_, &total);
+    // With every triangle usable, plc has the surface's points and triangles in the same order (weld()
+    // numbers points by first use), so the record covers to_plc()'s PLC.
+    const auto problems = find_problems(plc, limit_, &total, &r_.checked);
     for (const auto& p : problems) {
       // Distinct points, all used, no degenerate or duplicate simplex: only intersections remain.
       if (p.kind != PlcProblemKind::Intersection) continue;

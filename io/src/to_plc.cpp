@@ -18,6 +18,7 @@ Plc<3> to_plc(const Surface& surface, const SurfaceReport& report) {
     plc.exterior[t] = report.reverse[t] ? ExteriorSide::Positive : ExteriorSide::Negative;
     plc.tags[t] = static_cast<uint32_t>(t);
   }
+  plc.checked = report.checked;  // ignored by core unless it covers these points and simplices
   return plc;
 }
 

@@ -33,6 +33,45 @@ TEST(PlcCheck, ValidCubeSurfacePasses) {
   EXPECT_TRUE(cube.facet_bounded());
 }
 
+// The record of a check (Plc::checked) only ever saves time: find_problems() answers the same with it.
+TEST(PlcCheck, RecordOnlyForAProblemFreePlcAndOnlyWhereItCovers) {
+  Plc<3> cube = grid_box_surface(2);
+  std::shared_ptr<const PlcCheck<3>> record;
+  EXPECT_TRUE(find_problems(cube, 10, nullptr, &record).empty());
+  ASSERT_TRUE(record);
+  EXPECT_TRUE(record->covers(cube));
+
+  // A problem: no record (and an old one is reset).
+  Plc<3> bad = cube;
+  bad.simplices[3 * 0 + 1] = bad.simplices[3 * 0];  // a repeated vertex
+  std::shared_ptr<const PlcCheck<3>> none = record;
+  EXPECT_FALSE(find_problems(bad, 10, nullptr, &none).empty());
+  EXPECT_FALSE(none);
+
+  // The record travels with copies; any change to points or simplices makes it not cover.
+  Plc<3> copy = cube;
+  copy.checked = record;
+  EXPECT_TRUE(find_problems(copy).empty());
+  Plc<3> moved = copy;
+  moved.points[3 * 7 + 2] = -0.0 == moved.points[3 * 7 + 2] ? 0.0 : -0.0;  // a different bit pattern
+  EXPECT_FALSE(record->covers(moved));
+  Plc<3> crossing = copy;  // a vertex pushed through the opposite face: intersections
+  for (int k = 0; k < 3; ++k) crossing.points[3 * 0 + k] = 3.0;
+  EXPECT_FALSE(record->covers(crossing));
+  EXPECT_TRUE(has(crossing, PlcProblemKind::Intersection));
+  Plc<3> renumbered = copy;
+  std::swap(renumbered.simplices[0], renumbered.simplices[1]);
+  EXPECT_FALSE(record->covers(renumbered));
+
+  // What the record does not cover is checked as always.
+  Plc<3> shapes = copy;
+  shapes.exterior.pop_back();
+  EXPECT_TRUE(has(shapes, PlcProblemKind::BadShape));
+  Plc<3> seeds = copy;
+  seeds.region_seeds.push_back({{NAN, 0.0, 0.0}, 1});
+  EXPECT_TRUE(has(seeds, PlcProblemKind::BadRegionSeed));
+}
+
 TEST(PlcCheck, ShapeErrorsStopBeforeGeometry) {
   Plc<3> plc = unit_cube_surface();
   plc.points.pop_back();

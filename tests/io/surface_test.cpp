@@ -46,6 +46,31 @@ TEST(Inspect, OutwardCubeIsValidAndNeedsNoRepair) {
   EXPECT_EQ(r.box_max, (std::array<double, 3>{1, 1, 1}));
 }
 
+// The intersection test runs once on the import path: inspect() records it, to_plc() passes the
+// record on, cdt() relies on it only while it covers the PLC.
+TEST(Inspect, ValidSurfaceCarriesItsCheckIntoCdt) {
+  const Surface s = weld(cube_soup());
+  const SurfaceReport r = inspect(s);
+  ASSERT_TRUE(r.checked);
+  Plc<3> plc = to_plc(s, r);
+  EXPECT_TRUE(plc.checked && plc.checked->covers(plc));
+  CdtStatistics stats;
+  Options options;
+  options.statistics = &stats;
+  const Triangulation<3> tri = cdt(plc, options);
+  EXPECT_TRUE(stats.check_recorded);
+  // Point 0 moved onto point 1: a problem only the geometric checks (which the record skips) find.
+  for (int k = 0; k < 3; ++k) plc.points[k] = plc.points[3 + k];
+  EXPECT_FALSE(plc.checked->covers(plc));
+  EXPECT_THROW(cdt(plc, options), PlcError);
+  EXPECT_FALSE(stats.check_recorded);
+
+  Soup broken = cube_soup();
+  broken.triangles.resize(broken.triangles.size() - 3);  // open: invalid, so to_plc() passes nothing on
+  const Surface open = weld(broken);
+  EXPECT_THROW(to_plc(open, inspect(open)), SurfaceError);
+}
+
 TEST(Inspect, InsideOutCubeIsReversed) {
   const Surface s = weld(cube_soup(0, 1, false));
   const SurfaceReport r = inspect(s);

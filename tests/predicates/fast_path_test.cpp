@@ -69,6 +69,44 @@ void equal_points_case() {
 TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
 TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
 
+// Coordinates whose binary range exceeds 62 bits — CAD parts put 50.0 beside rounding residues such
+// as 3.67e-15 (r cos 90 degrees) — go to the fixed-width stage as multi-limb integers (ShiftedArith in
+// arith.h) instead of GMP. Exactly coplanar/cospherical sets (one coordinate shared by all points, so
+// orient is 0), their 1-ulp neighbours, and random mixes, against the rational reference.
+template <int D>
+void wide_range_case() {
+  Rng rng(0x71de0000 + D);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  const double residues[] = {3.673940187178589e-15, -9.797174820681343e-16, 6.123233995736766e-17, 0x1.8p-80};
+  const double large[] = {50.0, -37.5, 25.123456789, 0x1.fffffffffffffp+9};
+  for (int n = 0; n < 900; ++n) {
+    std::array<Point<D>, D + 2> pts;
+    for (auto& p : pts)
+      for (int k = 0; k < D; ++k) {
+        const int pick = uniform_int(rng, 0, 3);
+        p[k] = pick == 0   ? residues[uniform_int(rng, 0, 3)] * uniform_int(rng, -3, 3)
+               : pick == 1 ? large[uniform_int(rng, 0, 3)]
+                           : uniform(rng, -50.0, 50.0);
+      }
+    const int mode = n % 3;  // 0: random, 1: all on the plane x_k = c (orient 0), 2: that, one ulp off
+    if (mode != 0) {
+      const int k = uniform_int(rng, 0, D - 1);
+      const double c = residues[uniform_int(rng, 0, 3)];
+      for (auto& p : pts) p[k] = c;
+      if (mode == 2) pts[uniform_int(rng, 0, D)][k] = std::nextafter(c, 1.0);
+    }
+    check_orient_insphere<D>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 4) << "too few exact zeros: " << zeros << " of " << cases;
+}
+
+TEST(FastPath, WideBinaryRangeOrientInsphere2) { wide_range_case<2>(); }
+TEST(FastPath, WideBinaryRangeOrientInsphere3) { wide_range_case<3>(); }
+TEST(FastPath, WideBinaryRangeOrientInsphere4) { wide_range_case<4>(); }
+
 // Non-finite input is not an exact zero: the exact stage still reports it.
 TEST(FastPath, EqualNonFinitePointsAreNotZero) {
   const double inf = std::numeric_limits<double>::infinity();

@@ -53,6 +53,9 @@ struct CdtStatistics {
   // are those of the run returned.
   uint32_t perturbation_orders = 0, perturbation_order = 0;
   double seconds_check = 0, seconds_setup = 0, seconds_build = 0, seconds_finish = 0;
+  // The PLC carried a record of an earlier check that covers it (Plc::checked, e.g. from an importer):
+  // the geometric checks were not repeated, only the O(n + m) ones.
+  bool check_recorded = false;
 };
 
 struct Progress {

@@ -11,10 +11,16 @@
 //   region_seeds: optional points naming the region (connected part of the domain) they lie in.
 //   tags:      empty, or m caller-defined ids, one per simplex (importers store the index of the input
 //              triangle each simplex came from, so outputs can carry face ids / patch tags).
+//   checked:   empty, or the record of an earlier find_problems() that found no problem (PlcCheck,
+//              below). Set by importers that have checked the surface already (io::to_plc); users
+//              never need to touch it. It only ever saves time: a record that does not match the
+//              points and simplices bit for bit is ignored and the PLC is checked in full.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "sweepcdt/error.h"
@@ -26,6 +32,9 @@ enum class ExteriorSide : uint8_t {
   Positive,  // the positive side is exterior
   Negative,  // the negative side is exterior
 };
+
+template <int D>
+class PlcCheck;
 
 template <int D>
 struct RegionSeed {
@@ -42,6 +51,7 @@ struct Plc {
   std::vector<ExteriorSide> exterior;
   std::vector<RegionSeed<D>> region_seeds;
   std::vector<uint32_t> tags;
+  std::shared_ptr<const PlcCheck<D>> checked;
 
   std::size_t num_points() const { return points.size() / D; }
   std::size_t num_simplices() const { return simplices.size() / D; }
@@ -52,11 +62,35 @@ struct Plc {
   bool facet_bounded() const;
 };
 
+// The record that find_problems() found no problem at all in a PLC with exactly these points and
+// simplices (a copy of both, so that the record cannot outlive a change). Only find_problems()
+// makes one. find_problems() of a PLC that carries a record covering it (Plc::checked) skips the
+// geometric checks — duplicate points, degenerate and duplicate simplices, intersections, points on
+// simplices — whose answer the record already holds, and still checks the rest (shapes, finiteness,
+// index ranges, repeated vertices, exterior/tags sizes, region seeds), which costs O(n + m).
+// The CAD parts of the README spend about a quarter of their time in the intersection tests: an
+// importer that checked the surface passes the record on so that cdt() does not test it again.
+template <int D>
+class PlcCheck {
+ public:
+  // True when `plc` has exactly the points (bit for bit) and simplices of the PLC checked.
+  bool covers(const Plc<D>& plc) const;
+
+ private:
+  template <int E>
+  friend std::vector<PlcProblem> find_problems(const Plc<E>&, std::size_t, uint64_t*, std::shared_ptr<const PlcCheck<E>>*);
+  PlcCheck(std::vector<double> points, std::vector<uint32_t> simplices)
+      : points_(std::move(points)), simplices_(std::move(simplices)) {}
+  std::vector<double> points_;
+  std::vector<uint32_t> simplices_;
+};
+
 // Every problem of the PLC, up to `limit_per_kind` reported per kind (all are counted). Exact: no
 // tolerance anywhere. Intersections are found with a bounding-box tree, in O(m log m) for surfaces.
+// When there is no problem and `record` is given, *record is set to a PlcCheck of this PLC (else reset).
 template <int D>
 std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind = 10,
-                                      uint64_t* total = nullptr);
+                                      uint64_t* total = nullptr, std::shared_ptr<const PlcCheck<D>>* record = nullptr);
 
 // Throws PlcError listing the problems if there are any.
 template <int D>

@@ -82,10 +82,10 @@ struct ScanArith {
   static T one() { return {0, 1}; }  // |1| < 2^1
 };
 
-// Inputs scaled by 2^-lowest_bit are integers below 2^62; evaluated in WideInt<L>.
-template <int L>
-struct WideArith {
-  using T = WideInt<L>;
+// Inputs scaled by 2^-lowest_bit are integers below 2^62; evaluated in Int (WideInt<L> or Int128).
+template <class Int>
+struct IntArith {
+  using T = Int;
   int lowest_bit;
   [[gnu::always_inline]] int64_t scaled(double x) const {
     const Decomposed d = decompose(x);
@@ -97,6 +97,35 @@ struct WideArith {
   [[gnu::always_inline]] T diff(double a, double b) const { return T::from_int64(scaled(a)) - T::from_int64(scaled(b)); }
   static T one() { return T::from_int64(1); }  // unscaled: homogeneous formulas only
 };
+template <int L>
+using WideArith = IntArith<WideInt<L>>;
+using Int128Arith = IntArith<Int128>;
+
+// The same for inputs whose binary range exceeds 62 bits (CAD coordinates such as 50 beside a
+// rounding residue 3.7e-15 of cos(90 degrees)): each scaled input is a multi-limb integer, built from
+// its mantissa by a shift. A product still costs size(a) * size(b) limb products.
+template <int L>
+struct ShiftedArith {
+  using T = WideInt<L>;
+  int lowest_bit;
+  [[gnu::always_inline]] T scaled(double x) const {
+    const Decomposed d = decompose(x);
+    if (d.mantissa == 0) return T();
+    return T::from_shifted(d.mantissa, d.exponent - lowest_bit, d.negative);
+  }
+  [[gnu::always_inline]] T diff(double a, double b) const { return scaled(a) - scaled(b); }
+  static T one() { return T::from_int64(1); }  // unscaled: homogeneous formulas only
+};
+
+// The limbs the fixed-width stage needs for a formula of the given dry-run bound over finite inputs
+// spanning input_bits bits (every intermediate value is below 2^value_bits, and so is every scaled
+// input), or 0 when none of the widths offered suffices (then GMP).
+inline int fixed_width_limbs(const BitBound& bound, int input_bits) {
+  const long value_bits = static_cast<long>(bound.degree) * (input_bits + 1) + bound.extra;
+  for (int limbs : {2, 4, 8, 12})
+    if (value_bits < 64L * limbs) return limbs;
+  return 0;
+}
 
 // Exact value of a formula as a Dyadic, computed in fixed-width integers when the dry run proves
 // they suffice. The formula must be homogeneous (every term of the dry run's degree): the integer
@@ -116,6 +145,15 @@ Dyadic exact_value(const Formula& formula) {
     };
     if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
     if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
+  } else if (scan.finite) {
+    const long exponent = static_cast<long>(bound.degree) * scan.lowest_bit;
+    const auto run = [&](auto arith) {
+      const auto v = formula(arith);
+      return Dyadic::from_magnitude(v.mag.data(), v.size, v.negative, exponent);
+    };
+    const int limbs = fixed_width_limbs(bound, input_bits);
+    if (limbs != 0 && limbs <= 4) return run(ShiftedArith<4>{scan.lowest_bit});
+    if (limbs != 0 && limbs <= 8) return run(ShiftedArith<8>{scan.lowest_bit});
   }
   ExactArith exact;
   return formula(exact);
@@ -132,10 +170,19 @@ Sign exact_sign(const Formula& formula) {
   if (scan.finite && input_bits <= 62) {  // non-finite input: the dyadic path reports it
     const int value_bits = bound.degree * (input_bits + 1) + bound.extra;  // must stay below the sign bit
     const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
-    if (value_bits < 2 * 64) return run(WideArith<2>{scan.lowest_bit});
+    if (value_bits < 2 * 64) return run(Int128Arith{scan.lowest_bit});  // |value| < 2^127
     if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
     if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
     if (value_bits < 12 * 64) return run(WideArith<12>{scan.lowest_bit});
+  } else if (scan.finite) {  // a wide binary range: multi-limb inputs
+    const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
+    switch (fixed_width_limbs(bound, input_bits)) {
+      case 2: return run(ShiftedArith<2>{scan.lowest_bit});
+      case 4: return run(ShiftedArith<4>{scan.lowest_bit});
+      case 8: return run(ShiftedArith<8>{scan.lowest_bit});
+      case 12: return run(ShiftedArith<12>{scan.lowest_bit});
+      default: break;
+    }
   }
   ExactArith exact;
   return sign_of(formula(exact));

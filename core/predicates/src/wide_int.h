@@ -29,6 +29,24 @@ struct WideInt {
     return r;
   }
 
+  // (negative ? -1 : 1) * m * 2^shift for m != 0 and shift >= -(trailing zero bits of m), i.e. an
+  // integer; it must fit in L limbs (shift + bit length of m <= 64 L). Inputs of a wide binary range.
+  static WideInt from_shifted(uint64_t m, int shift, bool negative) {
+    WideInt r;
+    if (shift < 0) {
+      m >>= -shift;  // exact: only zero bits go
+      shift = 0;
+    }
+    const int limb = shift >> 6, bit = shift & 63;
+    for (int i = 0; i < limb; ++i) r.mag[i] = 0;
+    r.mag[limb] = m << bit;
+    r.size = limb + 1;
+    const uint64_t high = bit == 0 ? 0 : m >> (64 - bit);
+    if (high != 0) r.mag[r.size++] = high;
+    r.negative = negative;
+    return r;
+  }
+
   // |a| vs |b|: -1, 0, +1.
   static int compare_magnitude(const WideInt& a, const WideInt& b) {
     if (a.size != b.size) return a.size < b.size ? -1 : 1;
@@ -124,6 +142,22 @@ struct WideInt {
     return r;
   }
   int sign() const { return size == 0 ? 0 : (negative ? -1 : 1); }
+};
+
+// Int128: the narrowest width of the fixed-width stage, for formulas whose dry run proves every
+// value below 2^127 in magnitude: plain two's complement (__int128), so sums and products run without
+// the data-dependent branches of WideInt (sizes, magnitude comparisons, carries by loop), which
+// mispredict on the dense values of exactly coplanar CAD faces. Exact under the same proof as
+// WideInt<2>: no value overflows, so no wrap-around (and no undefined behaviour) ever happens.
+struct Int128 {
+  __int128 v = 0;
+
+  [[gnu::always_inline]] static Int128 from_int64(int64_t x) { return {x}; }
+  [[gnu::always_inline]] friend Int128 operator+(Int128 a, Int128 b) { return {a.v + b.v}; }
+  [[gnu::always_inline]] friend Int128 operator-(Int128 a, Int128 b) { return {a.v - b.v}; }
+  [[gnu::always_inline]] friend Int128 operator*(Int128 a, Int128 b) { return {a.v * b.v}; }
+  [[gnu::always_inline]] Int128 operator-() const { return {-v}; }
+  int sign() const { return (v > 0) - (v < 0); }
 };
 
 }  // namespace sweepcdt::predicates::detail

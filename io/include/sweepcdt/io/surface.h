@@ -14,6 +14,7 @@
 
 #include "sweepcdt/io/error.h"
 #include "sweepcdt/io/soup.h"
+#include "sweepcdt/plc.h"
 
 namespace sweepcdt::io {
 
@@ -67,6 +68,11 @@ struct SurfaceReport {
   std::vector<uint8_t> reverse;     // per triangle, 1 if to_plc() reverses it (valid surfaces only)
 
   std::array<double, 3> box_min{}, box_max{};
+
+  // When the self-intersection test found nothing: core's record that the PLC of the surface's points
+  // and triangles passed find_problems(). to_plc() hands it on (Plc::checked), so that cdt() does not
+  // repeat the exact intersection tests; core compares it with the PLC in full before relying on it.
+  std::shared_ptr<const PlcCheck<3>> checked;
 
   uint64_t closed_shells() const;
   uint64_t nested_shells() const;  // shells with depth > 0
