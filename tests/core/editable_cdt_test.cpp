@@ -3,7 +3,8 @@
 // perturbation) and pass validate(); deletions that are refused leave everything unchanged.
 // Inputs in D = 2..5: points in a simplex whose facets are notated constraints (vertices inside,
 // on the facets — where the facet is re-triangulated — and, for D = 3, on edges), the integer grid
-// (exact ties everywhere), convex-hull domains, and a PLC that has a CDT only with its vertex.
+// (exact ties everywhere), convex-hull domains (their hull vertices too, down to one simplex), and
+// Steiner points of a PLC that has no CDT without them.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -168,15 +169,21 @@ TEST(EditableCdt, Grid4) {
   EXPECT_GT(tally.deleted, 2);  // most grid points lie on lower-dimensional faces of the box (refused in D = 4)
 }
 
-// Convex-hull domains: interior vertices go; hull vertices are refused (not implemented).
-TEST(EditableCdt, HullDomain3) {
-  std::mt19937_64 rng(8);
-  Plc<3> plc;
-  plc.points = fixtures::distinct_grid_points<3>(rng, 60, 1 << 20);
-  const Tally tally = delete_all(plc, 8, "D=3 hull");
-  EXPECT_GT(tally.deleted, 20);
-  EXPECT_GT(tally.refused, 0);
+// Convex-hull domains: every vertex can go, those on the hull too (paper §5: the algorithm "works
+// correctly even if v lies on the boundary of the CDT"); the hull shrinks down to one simplex.
+template <int D>
+void hull_domain(int count, int grid, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  Plc<D> plc;
+  plc.points = fixtures::distinct_grid_points<D>(rng, count, grid);
+  const std::string what = "D=" + std::to_string(D) + " hull, grid " + std::to_string(grid);
+  const Tally tally = delete_all(plc, seed, what);
+  EXPECT_EQ(tally.deleted, count - (D + 1)) << what << ": " << tally.refused << " refused, " << tally.no_cdt << " without CDT";
 }
+TEST(EditableCdt, HullDomain2) { hull_domain<2>(60, 1 << 20, 8); }
+TEST(EditableCdt, HullDomain3) { hull_domain<3>(60, 1 << 20, 9); }
+TEST(EditableCdt, HullDomainGrid3) { hull_domain<3>(40, 3, 10); }
+TEST(EditableCdt, HullDomain4) { hull_domain<4>(25, 1 << 6, 11); }
 
 // Schönhardt's twisted prism has no CDT (no triangulation at all); with Steiner points it has one.
 // Deleting them all cannot succeed: each deletion that fails must fail exactly when cdt() of the

@@ -10,6 +10,9 @@
 // polytope its link bounds — star-shaped from v — by star_cdt()'s inward sweep (star_cdt.h): time
 // O(star size · log). A vertex may lie
 //   - inside the domain;
+//   - on the boundary of a convex-hull domain (paper §5: the sweep "works correctly even if v lies
+//     on the boundary"; the centre is perturbed away from a point inside the hull left, so that new
+//     hull faces through v are built from inside; the new hull is checked to be convex);
 //   - on constraining simplices, when each group of exactly coplanar ones around it (a sheet of a
 //     facet; when the PLC has tags, only simplices with equal tags form one facet — cdt() tags a
 //     refined PLC's triangles with their input triangle or coplanar facet) has v inside it (any D), or, for D = 3, on a straight edge of it with its two
@@ -38,7 +41,7 @@ namespace sweepcdt {
 
 // The vertex cannot leave the PLC: not a vertex of the triangulation, or a corner of a facet (it
 // would change the facet's shape), or a case not implemented (a vertex on the boundary of a facet
-// in D = 2 or D >= 4, or on the boundary of a convex-hull domain).
+// in D >= 4).
 class VertexRemovalError : public Error {
  public:
   using Error::Error;

@@ -293,7 +293,7 @@ bool collinear(const double* a, const double* b, const double* q) {
 }
 
 template <int D>
-Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>& t, int apex, const Vertices<D + 1>& delta) {
+Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>& t, int apex, const Vertex* delta, const int8_t* toward, int n) {
   const auto side = [&](const double* x) {
     Coords<D + 1> c;
     for (int j = 0, k = 0; j <= D; ++j)
@@ -303,17 +303,24 @@ Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>
   };
   if (cospherical_tie<D>(s, t)) detail::count_tie();  // as the general path counts it (power differences all zero)
   const Sign lambda = (inside_circumsphere<D>(s, t[apex]) ? Sign::Negative : Sign::Positive) * side(t[apex].x);
-  for (const Vertex& q : delta)
-    if (const Sign o = side(q.x); o != Sign::Zero) return lambda * o;
+  for (int k = 0; k < n; ++k)
+    if (const Sign o = side(delta[k].x); o != Sign::Zero) return toward[k] > 0 ? lambda * o : -(lambda * o);
   return Sign::Zero;
 }
 
 template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertices<D + 1>& delta) {
+  std::array<int8_t, D + 1> toward;
+  toward.fill(1);
+  return compare_power_sequences<D>(s, t, delta.data(), toward.data(), D + 1);
+}
+
+template <int D>
+Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* delta, const int8_t* toward, int n) {
   int apex = -1, others = 0;  // t's vertices not in s
   for (int j = 0; j <= D; ++j)
     if (std::none_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == t[j].id; })) apex = j, ++others;
-  if (others == 1) return compare_power_tuples_across<D>(s, t, apex, delta);
+  if (others == 1) return compare_power_tuples_across<D>(s, t, apex, delta, toward, n);
   // Sharing an edge ab, the difference (perturbation included) vanishes at a and b, so on their
   // line: a delta vertex there gives an exact zero, known without the exact stages (the star
   // sweep's centre on a segment through a deleted Steiner point, common).
@@ -323,7 +330,7 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
     if (std::any_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == v.id; }) && shared < 2) edge[shared++] = &v;
   const bool on_edge_line_possible = D - others + 1 == 2;
   const Sign sigma = orientation_product<D>(s, t, "compare_power_tuples");
-  for (int i = 0; i <= D; ++i) {
+  for (int i = 0; i < n; ++i) {
     if (on_edge_line_possible && collinear<D>(edge[0]->x, edge[1]->x, delta[i].x)) {
       if (i == 0 && cospherical_tie<D>(s, t)) detail::count_tie();
       continue;
@@ -333,7 +340,7 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
       if (i == 0 && cospherical_tie<D>(s, t)) detail::count_tie();
       r = power_difference_perturbed<D>(s, t, delta[i]);
     }
-    if (r != Sign::Zero) return r * sigma;
+    if (r != Sign::Zero) return toward[i] > 0 ? r * sigma : -(r * sigma);
   }
   return Sign::Zero;
 }
@@ -343,7 +350,8 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
   template KeyInterval circumcenter_interval<D>(const Vertices<D + 1>&, int);                     \
   template Sign compare_circumcenters<D>(const Vertices<D + 1>&, const Vertices<D + 1>&);        \
   template Sign compare_power<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex&); \
-  template Sign compare_power_tuples<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertices<D + 1>&);
+  template Sign compare_power_tuples<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertices<D + 1>&); \
+  template Sign compare_power_sequences<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex*, const int8_t*, int);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)

@@ -39,9 +39,9 @@ Sign behind_sign(const SphereSweep<D>& sweep, const Coords<D>& f) {
 
 template <int D>
 Sign behind_sign(const StarSweep<D>& sweep, const Coords<D>& f) {
-  for (const double* q : sweep.centre) {
-    const Sign o = orient<D>(with_point<D>(f, q));
-    if (o != Sign::Zero) return -o;
+  for (int k = 0; k < D + 2; ++k) {
+    const Sign o = orient<D>(with_point<D>(f, sweep.centre[k]));
+    if (o != Sign::Zero) return sweep.toward[k] > 0 ? -o : o;
   }
   throw std::invalid_argument("behind_sign: the star's centre points lie in the face's hyperplane");
 }

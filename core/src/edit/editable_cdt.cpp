@@ -159,11 +159,14 @@ struct EditableCdt<D>::Impl {
     if (live_vertices <= D + 1) throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the triangulation would be empty");
     const std::vector<uint32_t> star = star_of(v);
 
-    // Boundary faces through v that are no constraints: v is on a convex-hull domain's boundary.
+    // Boundary faces through v that are no constraints: v is on a convex-hull domain's boundary, and
+    // the cavity is open there (paper §5: the algorithm "works correctly even if v lies on the
+    // boundary of the CDT"); the new hull is checked after the sweep.
+    bool on_hull = false;
     for (uint32_t t : star)
       for (int i = 0; i <= D; ++i)
         if (simplex(t)[i] != v && neighbors[std::size_t{t} * (D + 1) + i] == kNone && !constraint_of.count(sorted(facet(t, i))))
-          throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: it lies on the boundary of the convex hull (not implemented)");
+          on_hull = true;
 
     // The facets through v, each without v (the paper's recursion).
     const std::vector<uint32_t> through = live_constraints_at(v);
@@ -214,19 +217,216 @@ struct EditableCdt<D>::Impl {
     std::array<double, D> centre;
     std::copy_n(point(v), D, centre.begin());
     try {
-      fill = detail::star_sweep_cdt<D>(cavity, centre, Options{}, stats);
+      std::array<double, D> inside;
+      if (on_hull) inside = point_inside_hull_left(v, star);
+      fill = detail::star_sweep_cdt<D>(cavity, centre, Options{}, stats, on_hull, on_hull ? &inside : nullptr);
     } catch (const NoCdtError& e) {
       std::vector<uint32_t> witness;
       for (uint32_t x : e.witness()) witness.push_back(x < ids.size() ? ids[x] : x);
       no_cdt(v, e.what(), witness);
     }
     compute_neighbors(fill);
-    const ValidationReport report = validate(fill, cavity);
-    if (!report.ok())
-      no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
+    if (on_hull && fill.num_simplices() == 0 && live_simplices == star.size())
+      throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the points left span no " + std::to_string(D) + "-dimensional simplex");
+    const Plc<D> region = on_hull ? closed_over_new_hull(v, cavity, fill, added.size()) : Plc<D>{};
+    if (fill.num_simplices() > 0) {
+      const ValidationReport report = validate(fill, on_hull ? region : cavity);
+      if (!report.ok())
+        no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
+    }
     for (uint32_t& x : fill.simplices) x = ids[x];
     check_link_delaunay(v, fill, link);
+    if (on_hull) {
+      check_new_hull(v, star, fill, link);
+      require_link_vertices_kept(v, ids, fill, link);
+    }
     commit(v, star, through, fill, link, added);
+  }
+
+  // --- a vertex on the convex hull ------------------------------------------------------------------
+  // A point strictly inside the convex hull of the vertices but v: the rounded centroid of a
+  // D-simplex of them (a star simplex with v swapped for another link vertex), checked exactly to lie
+  // strictly inside it.
+  std::array<double, D> point_inside_hull_left(uint32_t v, const std::vector<uint32_t>& star) const {
+    for (uint32_t t : star) {
+      for (uint32_t u : star)
+        for (int j = 0; j <= D; ++j) {
+          const uint32_t w = simplex(u)[j];
+          if (w == v || std::count(simplex(t), simplex(t) + D + 1, w)) continue;
+          std::array<uint32_t, D + 1> sigma;
+          std::copy_n(simplex(t), D + 1, sigma.begin());
+          *std::find(sigma.begin(), sigma.end(), v) = w;
+          const auto coords = [&](int replaced, const double* x) {
+            predicates::Coords<D + 1> c;
+            for (int k = 0; k <= D; ++k) c[k] = k == replaced ? x : point(sigma[k]);
+            return c;
+          };
+          const Sign whole = predicates::orient<D>(coords(-1, nullptr));
+          if (whole == Sign::Zero) continue;
+          std::array<double, D> centroid{};
+          for (int k = 0; k < D; ++k) {
+            double sum = 0;
+            for (uint32_t x : sigma) sum += point(x)[k];
+            centroid[k] = sum / (D + 1);
+          }
+          bool strictly = true;
+          for (int k = 0; k <= D && strictly; ++k) strictly = predicates::orient<D>(coords(k, centroid.data())) == whole;
+          if (strictly) return centroid;
+        }
+    }
+    throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: no point found strictly inside the convex hull left");
+  }
+
+  // The faces of `fill` (cavity numbering) with no simplex on one side.
+  static std::vector<std::pair<Key, int32_t>> open_faces(const Triangulation<D>& fill) {
+    std::vector<std::pair<Key, int32_t>> faces;  // sorted key, and the side notation keeping `fill` inside
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i)
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) {
+          Key f;
+          for (int k = 0, j = 0; k <= D; ++k)
+            if (k != i) f[j++] = fill.simplex(t)[k];
+          faces.push_back({f, (D - i) % 2 == 0 ? -1 : 1});
+        }
+    return faces;
+  }
+
+  // The region the cavity's CDT covers when v is on the hull: the link faces it reached, the sheets'
+  // simplices, and the new hull faces, notated with `fill` inside — for validate(). Every sheet
+  // simplex (the last `sheet_faces` constraints of the cavity) must be a face of `fill`.
+  Plc<D> closed_over_new_hull(uint32_t v, const Plc<D>& cavity, const Triangulation<D>& fill, std::size_t sheet_faces) const {
+    std::unordered_map<Key, uint32_t, TupleHash> constraint;
+    for (uint32_t j = 0; j < cavity.num_simplices(); ++j) {
+      Key k;
+      std::copy_n(cavity.simplex(j), D, k.begin());
+      constraint.emplace(sorted(k), j);
+    }
+    std::unordered_map<Key, int, TupleHash> faces_of_fill;
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i) {
+        Key f;
+        for (int k = 0, j = 0; k <= D; ++k)
+          if (k != i) f[j++] = fill.simplex(t)[k];
+        ++faces_of_fill[sorted(f)];
+      }
+    Plc<D> region;
+    region.points = cavity.points;
+    for (std::size_t j = cavity.num_simplices() - sheet_faces; j < cavity.num_simplices(); ++j) {
+      Key k;
+      std::copy_n(cavity.simplex(j), D, k.begin());
+      if (!faces_of_fill.count(sorted(k))) no_cdt(v, "a facet through it is not covered after the deletion", {});
+      region.simplices.insert(region.simplices.end(), k.begin(), k.end());
+      region.exterior.push_back(cavity.exterior_of(j));
+    }
+    for (const auto& [f, side] : open_faces(fill)) {
+      const auto c = constraint.find(sorted(f));
+      if (c != constraint.end() && c->second >= cavity.num_simplices() - sheet_faces) continue;  // added above
+      region.simplices.insert(region.simplices.end(), f.begin(), f.end());
+      region.exterior.push_back(side < 0 ? ExteriorSide::Negative : ExteriorSide::Positive);
+    }
+    return region;
+  }
+
+  // The new hull is convex: at every ridge of a new hull face, the hull face across (new, or old
+  // outside the star) does not bend outward. A closed surface that is locally convex everywhere
+  // bounds a convex set, and every point is a vertex inside it: it is the convex hull.
+  void check_new_hull(uint32_t v, const std::vector<uint32_t>& star, const Triangulation<D>& fill, const std::vector<LinkFace>& link) const {
+    struct HullFace {
+      Key f;
+      uint32_t inner;  // a vertex on its domain side
+    };
+    std::unordered_map<Key, const LinkFace*, TupleHash> link_of;
+    for (const LinkFace& f : link) link_of.emplace(f.key, &f);
+    std::vector<HullFace> hull;
+    std::unordered_map<Key, bool, TupleHash> covered;
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i) {
+        Key f;
+        for (int k = 0, j = 0; k <= D; ++k)
+          if (k != i) f[j++] = fill.simplex(t)[k];
+        covered[sorted(f)] = true;
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && !link_of.count(sorted(f)) && !constraint_of.count(sorted(f)))
+          hull.push_back({f, fill.simplex(t)[i]});
+      }
+    for (const LinkFace& f : link)
+      if (!covered.count(f.key) && f.across != kNone)  // the link face is a hull face now
+        hull.push_back({f.key, simplex(f.across / (D + 1))[f.across % (D + 1)]});
+    std::unordered_map<std::array<uint32_t, D - 1>, std::vector<uint32_t>, TupleHash> at_ridge;
+    const auto ridge = [](const Key& f, int skip) {
+      std::array<uint32_t, D - 1> r;
+      for (int k = 0, j = 0; k < D; ++k)
+        if (k != skip) r[j++] = f[k];
+      std::sort(r.begin(), r.end());
+      return r;
+    };
+    for (uint32_t h = 0; h < hull.size(); ++h)
+      for (int k = 0; k < D; ++k) at_ridge[ridge(hull[h].f, k)].push_back(h);
+    const auto side = [&](const Key& f, uint32_t x) {
+      predicates::Coords<D + 1> c;
+      for (int k = 0; k < D; ++k) c[k] = point(f[k]);
+      c[D] = point(x);
+      return predicates::orient<D>(c);
+    };
+    for (uint32_t h = 0; h < hull.size(); ++h)
+      for (int k = 0; k < D; ++k) {
+        const auto r = ridge(hull[h].f, k);
+        const auto& on = at_ridge[r];
+        uint32_t apex = kNone;
+        if (on.size() == 2) {
+          const Key& g = hull[on[0] == h ? on[1] : on[0]].f;
+          for (uint32_t x : g)
+            if (!std::binary_search(r.begin(), r.end(), x)) apex = x;
+        } else if (on.size() == 1) {
+          apex = old_hull_apex(r, star, link);
+        }
+        if (apex == kNone) no_cdt(v, "the convex hull left has no face across ridge " + detail::ids_text(r.data(), D - 1), {});
+        const Sign inside = side(hull[h].f, hull[h].inner), there = side(hull[h].f, apex);
+        if (there != Sign::Zero && there != inside) {
+          std::vector<uint32_t> witness(hull[h].f.begin(), hull[h].f.end());
+          witness.push_back(apex);
+          no_cdt(v, "the domain left would not be convex at face " + detail::ids_text(hull[h].f.data(), D), witness);
+        }
+      }
+  }
+
+  // Every vertex of the link must stay a vertex: in a new simplex, or in one outside the star (a
+  // point left outside the new hull would make it no convex hull of the points).
+  void require_link_vertices_kept(uint32_t v, const std::vector<uint32_t>& ids, const Triangulation<D>& fill,
+                                  const std::vector<LinkFace>& link) const {
+    std::unordered_map<uint32_t, bool> kept;
+    for (uint32_t x : fill.simplices) kept[x] = true;
+    for (const LinkFace& f : link)
+      if (f.across != kNone)
+        for (uint32_t x : f.key) kept[x] = true;
+    for (uint32_t x : ids)
+      if (!kept.count(x)) no_cdt(v, "vertex " + std::to_string(x) + " would be left outside the new convex hull", {x});
+  }
+
+  // The old hull face at ridge r outside the star: walk around r from a link face's outside
+  // neighbour until a facet without a neighbour; returns its vertex off r (kNone if none).
+  uint32_t old_hull_apex(const std::array<uint32_t, D - 1>& r, const std::vector<uint32_t>& star, const std::vector<LinkFace>& link) const {
+    const auto holds_r = [&](const Key& f) {
+      return std::all_of(r.begin(), r.end(), [&](uint32_t x) { return std::count(f.begin(), f.end(), x) > 0; });
+    };
+    for (const LinkFace& f : link) {
+      if (!holds_r(f.key)) continue;
+      if (f.across == kNone) {  // an old hull face itself, kept
+        for (uint32_t x : f.key)
+          if (!std::count(r.begin(), r.end(), x)) return x;
+      }
+      uint32_t u = f.across / (D + 1), entered = f.across % (D + 1);
+      for (std::size_t steps = 0; steps < live_simplices; ++steps) {
+        int leave = -1;
+        for (int i = 0; i <= D; ++i)
+          if (i != static_cast<int>(entered) && !std::count(r.begin(), r.end(), simplex(u)[i])) leave = i;
+        const uint32_t next = neighbors[std::size_t{u} * (D + 1) + leave];
+        if (next == kNone) return simplex(u)[entered];
+        u = next / (D + 1);
+        entered = next % (D + 1);
+        if (std::count(star.begin(), star.end(), u)) break;  // around r back into the cavity
+      }
+    }
+    return kNone;
   }
 
   // Which side of constraint c (through v) is outside the cavity for the sweep: none when the star
@@ -263,7 +463,9 @@ struct EditableCdt<D>::Impl {
     for (const LinkFace& face : link) {
       if (face.across == kNone || constraint_of.count(face.key)) continue;
       const uint32_t apex = simplex(face.across / (D + 1))[face.across % (D + 1)];
-      const uint32_t t = inner_of.at(face.key);
+      const auto found = inner_of.find(face.key);
+      if (found == inner_of.end()) continue;  // no new simplex there: a hull face now (v was on the hull)
+      const uint32_t t = found->second;
       predicates::Vertices<D + 1> s;
       for (int i = 0; i <= D; ++i) s[i] = vertex(fill.simplex(t)[i]);
       if (predicates::inside_circumsphere<D>(s, vertex(apex))) {
@@ -329,6 +531,20 @@ struct EditableCdt<D>::Impl {
         if (across != kNone) neighbors[across] = g * (D + 1) + i;
         if (!regions.empty()) regions[g] = f->second->region;
       }
+    }
+    // Link faces no new simplex reached (v was on the hull): their outside simplex is on the hull now.
+    std::unordered_map<Key, bool, TupleHash> covered;
+    for (uint32_t t = 0; t < fill.num_simplices(); ++t)
+      for (int i = 0; i <= D; ++i) covered[sorted(facet(slot[t], i))] = true;
+    std::unordered_map<uint32_t, bool> in_fill;
+    for (uint32_t x : fill.simplices) in_fill[x] = true;
+    for (const LinkFace& f : link) {
+      if (f.across == kNone) continue;
+      if (!covered.count(f.key)) neighbors[f.across] = kNone;
+      // A vertex only outside the new simplices walks from the simplex outside (its old one may
+      // have been a star slot, freed or reused).
+      for (uint32_t w : f.key)
+        if (!in_fill.count(w)) simplex_at[w] = f.across / (D + 1);
     }
     if (!regions.empty()) spread_regions(fill, slot, link_of);
   }

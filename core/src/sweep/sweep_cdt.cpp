@@ -60,8 +60,8 @@ class Sweep {
 
  public:
   Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
-        const Options& options, CdtStatistics& stats)
-      : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats),
+        const Options& options, CdtStatistics& stats, bool open = false)
+      : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats), open_(open),
         drop_next_(plc.num_points(), kNone), reached_(plc.num_points(), 0), queue_(ItemOrder{this}) {}
 
   Triangulation<D> run() {
@@ -72,6 +72,7 @@ class Sweep {
     for (uint32_t f = 0; f < faces_.size(); ++f)
       if (!faces_[f].built_front) new_face(f);
     sweep();
+    if (open_) return triangulation_of<D>(plc_, std::move(simplices_));  // the caller checks the sides
     require_domain_sides_built();
     if constexpr (kStar) require_inner_sides_built();
     return triangulation_of<D>(plc_, std::move(simplices_));
@@ -145,16 +146,17 @@ class Sweep {
     if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
       return predicates::compare_circumcenters<D>(vertices(a.s), vertices(b.s)) == Sign::Negative;
     else if constexpr (kStar)  // decreasing power tuples (paper §5)
-      return predicates::compare_power_tuples<D>(vertices(b.s), vertices(a.s), star_centre()) == Sign::Negative;
+      return predicates::compare_power_sequences<D>(vertices(b.s), vertices(a.s), star_centre().data(), frame_.toward.data(), D + 2) ==
+             Sign::Negative;
     else
       return predicates::compare_power_tuples<D>(vertices(a.s), vertices(b.s), vertices(*delta_)) == Sign::Negative;
   }
   // The star's centre p and its tie-breaking points: no vertices (their lifts cancel in power
   // comparisons, sweep_keys.h), so no ids.
-  predicates::Vertices<D + 1> star_centre() const {
-    predicates::Vertices<D + 1> v;
+  std::array<predicates::Vertex, D + 2> star_centre() const {
+    std::array<predicates::Vertex, D + 2> v{};
     if constexpr (kStar)
-      for (int i = 0; i <= D; ++i) v[i] = {frame_.centre[i], kNone};
+      for (int i = 0; i < D + 2; ++i) v[i] = {frame_.centre[i], kNone};
     return v;
   }
   predicates::KeyInterval key_interval(const std::array<uint32_t, D + 1>& s) const {
@@ -467,6 +469,7 @@ class Sweep {
   const std::optional<std::array<uint32_t, D + 1>> delta_;
   const Options& options_;
   CdtStatistics& stats_;
+  const bool open_;  // star sweep of a deleted hull vertex: constraints may stay without a simplex
   std::vector<Face<D>> faces_;
   TupleMap<D> face_of_;
   TupleMap<D - 1> ridge_anchor_;
@@ -490,24 +493,29 @@ Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uin
 
 template <int D>
 Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
-                                CdtStatistics& stats) {
+                                CdtStatistics& stats, bool open, const std::array<double, D>* away) {
   // Ties (faces through the centre p, equal powers) are broken as if p were moved infinitesimally
-  // toward q_1, then q_2, ...: q_k is p with its coordinate k-1 changed, so they are affinely
-  // independent. Any such choice gives the CDT (it is unique under the §6 perturbation).
-  std::array<std::array<double, D>, D + 1> points;
+  // away from `away` (a point inside the domain, when p is on its hull), then toward q_2, q_3, ...:
+  // p with its coordinate k-2 changed, so that they are affinely independent. Inside the polytope
+  // any such choice gives the CDT (it is unique under the §6 perturbation).
+  std::array<std::array<double, D>, D + 2> points;
   points.fill(centre);
   predicates::StarSweep<D> frame;
-  for (int k = 0; k <= D; ++k) {
-    if (k > 0) points[k][k - 1] = centre[k - 1] == 0 ? 1 : -centre[k - 1];
-    frame.centre[k] = points[k].data();
-  }
-  return Sweep<D, predicates::StarSweep<D>>(plc, frame, std::nullopt, options, stats).run();
+  for (int k = 2; k < D + 2; ++k) points[k][k - 2] = centre[k - 2] == 0 ? 1 : -centre[k - 2];
+  points[1] = away ? *away : points[2];
+  if (away) frame.toward[1] = -1;
+  for (int k = 0; k < D + 2; ++k) frame.centre[k] = points[k].data();
+  return Sweep<D, predicates::StarSweep<D>>(plc, frame, std::nullopt, options, stats, open).run();
 }
 
-template Triangulation<2> star_sweep_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&, CdtStatistics&);
-template Triangulation<3> star_sweep_cdt<3>(const Plc<3>&, const std::array<double, 3>&, const Options&, CdtStatistics&);
-template Triangulation<4> star_sweep_cdt<4>(const Plc<4>&, const std::array<double, 4>&, const Options&, CdtStatistics&);
-template Triangulation<5> star_sweep_cdt<5>(const Plc<5>&, const std::array<double, 5>&, const Options&, CdtStatistics&);
+template Triangulation<2> star_sweep_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&, CdtStatistics&, bool,
+                                             const std::array<double, 2>*);
+template Triangulation<3> star_sweep_cdt<3>(const Plc<3>&, const std::array<double, 3>&, const Options&, CdtStatistics&, bool,
+                                             const std::array<double, 3>*);
+template Triangulation<4> star_sweep_cdt<4>(const Plc<4>&, const std::array<double, 4>&, const Options&, CdtStatistics&, bool,
+                                             const std::array<double, 4>*);
+template Triangulation<5> star_sweep_cdt<5>(const Plc<5>&, const std::array<double, 5>&, const Options&, CdtStatistics&, bool,
+                                             const std::array<double, 5>*);
 template Triangulation<2> sweep_cdt<2>(const Plc<2>&, const std::optional<std::array<uint32_t, 3>>&, const Options&, CdtStatistics&);
 template Triangulation<3> sweep_cdt<3>(const Plc<3>&, const std::optional<std::array<uint32_t, 4>>&, const Options&, CdtStatistics&);
 template Triangulation<4> sweep_cdt<4>(const Plc<4>&, const std::optional<std::array<uint32_t, 5>>&, const Options&, CdtStatistics&);

@@ -14,9 +14,13 @@ Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uin
                            const Options& options, CdtStatistics& stats);
 
 // Paper §5: simplices of the CDT of a checked PLC whose notated constraints bound a polytope that is
-// star-shaped from `centre` (sweepcdt/star_cdt.h). Throws NoCdtError, CancelledError.
+// star-shaped from `centre` (sweepcdt/star_cdt.h). Throws NoCdtError, CancelledError. `open`: the
+// polytope is the link of a vertex on the convex hull (paper §5: "works correctly even if v lies on
+// the boundary of the CDT"); its constraints need not all get a simplex, the caller checks the result.
+// `away`: a point strictly inside the domain left; the centre is perturbed away from it, so that new
+// hull faces through the centre have their simplices behind them.
 template <int D>
 Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
-                                CdtStatistics& stats);
+                                CdtStatistics& stats, bool open = false, const std::array<double, D>* away = nullptr);
 
 }  // namespace sweepcdt::detail

@@ -28,6 +28,12 @@ template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
                           const Vertices<D + 1>& delta);
 
+// The same for any sequence of points q_0..q_{n-1} (n <= D + 2), entry k multiplied by toward[k]
+// (+1 or -1): the order of the star sweep (sweep_sides.h, StarSweep), whose centre may be perturbed
+// away from a point.
+template <int D>
+Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* q, const int8_t* toward, int n);
+
 // Certified enclosures of the keys, to compare queue items cheaply: the exact (unperturbed) value
 // lies in [lo, hi]. When two enclosures are disjoint their order is the order of the perturbed keys
 // too (the perturbation is infinitesimal); otherwise compare exactly with the functions above.

@@ -9,6 +9,9 @@
 //   holding q_1, and so on (p perturbed toward q_1, q_2, ...: the same tie rule as the sphere's).
 // All are stated through orient(f_0..f_{D-1}, p): behind_sign() is the sign that means "behind".
 #pragma once
+#include <array>
+#include <cstdint>
+
 #include "sweepcdt/predicates/sign.h"
 #include "sweepcdt/predicates/vertex.h"
 
@@ -23,7 +26,18 @@ struct SphereSweep {
 
 template <int D>
 struct StarSweep {
-  Coords<D + 1> centre;  // p, then the tie-breaking points q_1..q_D (p, q_1, ..., q_D affinely independent)
+  // p, then the tie-breaking points q_1..q_{D+1}: among them D+1 affinely independent ones. p is
+  // perturbed toward q_k (toward[k] = 1) or away from it (-1): a centre on the convex hull of a
+  // deletion is perturbed away from a point inside, so that the new hull faces through it are seen
+  // from outside (their simplices lie behind them).
+  std::array<const double*, D + 2> centre;
+  std::array<int8_t, D + 2> toward = all_toward();
+
+  static constexpr std::array<int8_t, D + 2> all_toward() {
+    std::array<int8_t, D + 2> t{};
+    t.fill(1);
+    return t;
+  }
 };
 
 enum class Side : int8_t { Behind = -1, On = 0, Front = 1 };
