@@ -195,3 +195,14 @@ def test_threads_sharing_one_object_take_turns():
     assert sorted(reports[0].removed + reports[1].removed) == inner.tolist()  # every inner vertex went
     assert edit.num_vertices == corners
     assert_is_cdt_of_its_plc(edit.snapshot())
+
+
+def test_a_mesh_made_under_another_perturbation_order():
+    """The cube's fixed face diagonals have a CDT only under a later order (paper §6): from_tet_mesh
+    must find that order, as `sweepcdt check` does, and keep it."""
+    points, triangles = unit_cube()
+    mesh = sweepcdt.tetrahedralize(points, triangles, steiner="none", facets="triangles")
+    assert mesh.stats["perturbation_order"] != 0
+    snap = sweepcdt.EditableCdt.from_tet_mesh(mesh).snapshot()
+    assert snap.perturbation_rank is not None and sorted(snap.perturbation_rank) == list(range(8))
+    assert simplex_set(snap.simplices) == simplex_set(mesh.tetrahedra)

@@ -83,7 +83,7 @@ class EditableCdt:
 
     @property
     def vertices(self):
-        """The ids of the vertices left, ascending (an int64 array)."""
+        """The ids of the vertices left, ascending (an int64 array; a snapshot: O(size of the mesh))."""
         return self.snapshot().old_ids
 
     def has_vertex(self, v):
