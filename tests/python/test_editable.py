@@ -206,3 +206,19 @@ def test_a_mesh_made_under_another_perturbation_order():
     snap = sweepcdt.EditableCdt.from_tet_mesh(mesh).snapshot()
     assert snap.perturbation_rank is not None and sorted(snap.perturbation_rank) == list(range(8))
     assert simplex_set(snap.simplices) == simplex_set(mesh.tetrahedra)
+
+
+def test_progress_cancels_remove_vertices_between_whole_deletions():
+    points, corners = cube_with_inner_points(2, 200, seed=4)
+    edit = sweepcdt.EditableCdt(points)
+    calls = []
+
+    def progress(phase, done, total):  # asked every 64 deletions: stop at the second call
+        calls.append((phase, done, total))
+        return done < 64
+
+    with pytest.raises(sweepcdt.CancelledError):
+        edit.remove_vertices(range(corners, len(points)), progress=progress)
+    assert calls == [("deleting vertices", 0, 200), ("deleting vertices", 64, 200)]
+    assert edit.num_vertices == len(points) - 64  # the deletions made before stay, each whole
+    assert_is_cdt_of_its_plc(edit.snapshot())
