@@ -76,7 +76,7 @@ class Editable {
       std::visit(
           [&](auto& e) {
             for (std::size_t k = 0; k < ids.size(); ++k) {
-              // Ctrl-C and the callback are looked at every 64 deletions (each takes microseconds).
+              // Ctrl-C and the callback are looked at every 64 deletions (64 take ~10 ms in 3D, ~0.2 s in 4D).
               if (k % 64 == 0 && !watch.report("deleting vertices", k, ids.size())) throw CancelledError();
               try {
                 require_in_range(ids[k]);
