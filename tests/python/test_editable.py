@@ -72,29 +72,34 @@ def test_grid_with_exact_ties(d):
     assert_is_cdt_of_its_plc(edit.snapshot())
 
 
-def test_facets_of_a_tetrahedralized_box_are_retriangulated():
-    """A TetMesh from tetrahedralize(): points inside the box's flat faces go, corners stay."""
+@pytest.mark.parametrize("facets", ["coplanar", "triangles"])
+def test_face_centres_of_a_tetrahedralized_box(facets):
+    """A TetMesh from tetrahedralize(): a face's centre goes when the face is one facet (coplanar:
+    its triangles share one tag), not when each triangle is a facet of its own; corners stay."""
     points, _ = unit_cube()
     quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]  # counterclockwise from outside
     centres = points[np.array(quads)].mean(axis=1)  # exact: halves
     fans = [(quad[i], quad[(i + 1) % 4], 8 + q) for q, quad in enumerate(quads) for i in range(4)]
-    all_points = np.vstack([points, centres])
-    mesh = sweepcdt.tetrahedralize(all_points, np.array(fans), facets="triangles", steiner="none")
+    mesh = sweepcdt.tetrahedralize(np.vstack([points, centres]), np.array(fans), facets=facets, steiner="none")
     edit = sweepcdt.EditableCdt.from_tet_mesh(mesh)
     report = edit.remove_vertices(range(len(mesh.points)))
     # Vertex ids are the mesh's (welded: in order of first use), mapped from the input's by point_ids.
-    assert sorted(report.removed) == sorted(mesh.point_ids[8:])        # the face centres
-    assert sorted(report.refused_ids) == sorted(mesh.point_ids[:8])    # the corners
+    centre_ids, corner_ids = sorted(mesh.point_ids[8:]), sorted(mesh.point_ids[:8])
     assert all(isinstance(e, sweepcdt.VertexRemovalError) and e.vertex == v for v, e in report.refused)
+    if facets == "triangles":  # each centre is a corner of its four facets
+        assert report.removed == [] and sorted(report.refused_ids) == sorted(centre_ids + corner_ids)
+        return
+    assert sorted(report.removed) == centre_ids and sorted(report.refused_ids) == corner_ids
     snap = edit.snapshot()
     assert len(snap.points) == 8 and len(snap.constraints) == 12
     assert volumes(snap.points, snap.simplices).sum() == pytest.approx(1.0)
-    assert_is_cdt_of_its_plc(snap)
     tet = snap.to_tet_mesh()
     assert len(tet.triangles) == 12 and (tet.point_ids[mesh.point_ids[8:]] == -1).all()
     # Outward: the boundary triangles' normals point away from the cube's centre.
     a, b, c = (tet.points[tet.triangles[:, k]] for k in range(3))
     assert (np.einsum("ij,ij->i", np.cross(b - a, c - a), (a + b + c) / 3 - 0.5) > 0).all()
+    # The cube's corners are cospherical: exact ties, decided by the perturbation as cdt() decides them.
+    assert_is_cdt_of_its_plc(snap)
 
 
 def test_refusals_are_reported_and_change_nothing():

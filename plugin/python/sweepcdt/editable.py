@@ -21,8 +21,9 @@ class EditableCdt:
     Deleting vertex v empties its star (the simplices holding it) and fills the hole with the CDT
     of the polytope its link bounds, by the inward sweep of paper §5: time proportional to the
     star's size (times a log), not to the mesh's. A vertex may lie inside the domain, or inside a
-    facet (a flat group of constraining simplices; in 3D also on a straight facet edge between its
-    two neighbours along it): the facet is then triangulated anew without it. Every deletion is
+    facet (a flat group of constraining simplices, with equal tags when there are tags; in 3D also
+    on a straight facet edge between its two neighbours along it): the facet is then triangulated
+    anew without it. Every deletion is
     checked exactly; one that would leave a PLC without a CDT raises NoCdtError and changes nothing.
 
     Vertex ids are those of the points given (for a TetMesh: its rows of ``points``) and do not
@@ -31,8 +32,8 @@ class EditableCdt:
 
     Construction computes the CDT like ``sweepcdt.cdt()``: ``constraints`` (m, D) point ids are
     cdt()'s ``simplices`` (None: none, the Delaunay triangulation of the points' convex hull),
-    ``exterior``, ``tags``, ``algorithm``, ``steiner`` ("none" or, in 3D, "auto": Steiner points
-    become vertices too, which can be deleted again) and ``facets`` (3D) as there; ``progress`` as
+    ``exterior``, ``tags``, ``algorithm``, ``steiner`` ("none" or, in 3D, "auto": the Steiner
+    points cdt() keeps become vertices with ids after the input's) and ``facets`` (3D) as there; ``progress`` as
     for tetrahedralize(). Raises what cdt() raises.
     """
 
@@ -61,7 +62,11 @@ class EditableCdt:
     def from_tet_mesh(cls, mesh):
         """An EditableCdt of a TetMesh (from tetrahedralize(), mesh_file() or read_volume_mesh()):
         its tetrahedra, constrained by its boundary triangles (outside their counterclockwise side,
-        tagged with ``triangle_ids``), validated as in from_triangulation()."""
+        tagged with ``triangle_ids``), validated as in from_triangulation().
+
+        Triangles with different ``triangle_ids`` belong to different facets: in a mesh made with
+        facets="coplanar" (the default) a flat face is one facet, whose inner vertices can go; with
+        facets="triangles" every input triangle is a facet, and its corners stay."""
         exterior = np.full(len(mesh.triangles), -1, dtype=np.int64)  # counterclockwise from outside
         return cls.from_triangulation(mesh.points, mesh.tetrahedra, mesh.triangles, exterior=exterior,
                                       tags=mesh.triangle_ids, regions=mesh.regions)
