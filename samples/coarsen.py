@@ -72,7 +72,7 @@ def main():
     edit = sweepcdt.EditableCdt.from_tet_mesh(fine)
     start = time.perf_counter()
     # In random order: deleted in id order (row by row across each face) the vertices left on a face
-    # gather ever larger stars, and the same deletions take about 4x longer. A vertex refused now
+    # gather ever larger stars, and the same deletions take about 6x longer. A vertex refused now
     # may go once its neighbours have: repeat while a pass deletes something.
     candidates, passes = np.random.default_rng(1).permutation(len(fine.points)).tolist(), 0
     while True:
