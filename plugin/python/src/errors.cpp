@@ -7,18 +7,24 @@
 #include <new>
 
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/io/error.h"
 
 namespace sweepcdt::python {
 namespace py = pybind11;
 namespace {
 
-// Sets the Python error to sweepcdt.errors.<name>(message) with the given attributes.
-void raise(const char* name, const std::string& message, const py::dict& attributes = {}) {
-  const py::object type = py::module_::import("sweepcdt.errors").attr(name);
-  const py::object error = type(message);
+// sweepcdt.errors.<name>(message) with the given attributes.
+py::object exception(const char* name, const std::string& message, const py::dict& attributes = {}) {
+  const py::object error = py::module_::import("sweepcdt.errors").attr(name)(message);
   for (const auto& [key, value] : attributes) py::setattr(error, key, value);
-  PyErr_SetObject(type.ptr(), error.ptr());
+  return error;
+}
+
+// Sets the Python error to that exception.
+void raise(const char* name, const std::string& message, const py::dict& attributes = {}) {
+  const py::object error = exception(name, message, attributes);
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
 }
 
 template <class Problem, class KindName>
@@ -33,6 +39,13 @@ std::string ids_text(const std::vector<uint32_t>& ids) {
   std::string s;
   for (uint32_t id : ids) s += (s.empty() ? "" : " ") + std::to_string(id);
   return s;
+}
+
+std::string no_cdt_message(const NoCdtError& e) {
+  std::string message = e.what();
+  // As the converter says it: the ids are the welded input's (an EditableCdt's own ids).
+  if (!e.witness().empty()) message += " (witness vertices " + ids_text(e.witness()) + ", 0-based input ids)";
+  return message;
 }
 
 void translate(std::exception_ptr p) {
@@ -62,10 +75,9 @@ void translate(std::exception_ptr p) {
   } catch (const NoCdtError& e) {
     py::dict a;
     a["witness"] = py::tuple(py::cast(e.witness()));
-    std::string message = e.what();
-    // As the converter says it: the ids are the welded input's.
-    if (!e.witness().empty()) message += " (witness vertices " + ids_text(e.witness()) + ", 0-based input ids)";
-    raise("NoCdtError", message, a);
+    raise("NoCdtError", no_cdt_message(e), a);
+  } catch (const VertexRemovalError& e) {
+    raise("VertexRemovalError", e.what());
   } catch (const OutputFailure& e) {
     raise("OutputError", e.what());
   } catch (const NotValid& e) {
@@ -93,5 +105,18 @@ void translate(std::exception_ptr p) {
 }  // namespace
 
 void register_error_translator() { py::register_exception_translator(&translate); }
+
+py::object removal_exception(std::exception_ptr error, int64_t vertex) {
+  py::dict a;
+  a["vertex"] = vertex;
+  try {
+    std::rethrow_exception(error);
+  } catch (const NoCdtError& e) {
+    a["witness"] = py::tuple(py::cast(e.witness()));
+    return exception("NoCdtError", no_cdt_message(e), a);
+  } catch (const VertexRemovalError& e) {
+    return exception("VertexRemovalError", e.what(), a);
+  }
+}
 
 }  // namespace sweepcdt::python

@@ -3,6 +3,7 @@
 //
 //   io::InputError, io::SurfaceError, PlcError  → sweepcdt.InvalidInputError (exit 3; a ValueError)
 //   NoCdtError                                  → sweepcdt.NoCdtError (exit 4; .witness)
+//   VertexRemovalError                          → sweepcdt.VertexRemovalError (a ValueError)
 //   OutputFailure (below)                       → sweepcdt.OutputError (exit 5; an OSError)
 //   NotValid (below)                            → sweepcdt.CheckError (exit 6; .failures)
 //   std::bad_alloc                              → MemoryError
@@ -12,6 +13,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <pybind11/pybind11.h>
+
+#include <exception>
 
 #include "sweepcdt/validate.h"
 
@@ -31,5 +36,10 @@ class NotValid : public std::runtime_error {
 };
 
 void register_error_translator();
+
+// The Python exception object (not raised) for a refused vertex deletion: NoCdtError or
+// VertexRemovalError, with .vertex set (EditableCdt.remove_vertices reports them without raising).
+// Rethrows anything else.
+pybind11::object removal_exception(std::exception_ptr error, int64_t vertex);
 
 }  // namespace sweepcdt::python

@@ -11,6 +11,7 @@
 #include "any_dimension.h"
 #include "arrays.h"
 #include "check_files.h"
+#include "editable.h"
 #include "errors.h"
 #include "options.h"
 #include "running.h"
@@ -125,7 +126,8 @@ PYBIND11_MODULE(_sweepcdt, m) {
   m.def("mesh_file", &mesh_file, py::arg("input"), py::arg("outputs"), py::arg("format"), py::arg("algorithm"),
         py::arg("steiner"), py::arg("facets"), py::arg("snap"), py::arg("check"), py::arg("progress"));
   m.def("cdt", &cdt_any_dimension, py::arg("points"), py::arg("simplices"), py::arg("exterior"), py::arg("tags"),
-        py::arg("algorithm"), py::arg("steiner"), py::arg("check"), py::arg("progress"));
+        py::arg("algorithm"), py::arg("steiner"), py::arg("facets"), py::arg("check"), py::arg("progress"));
+  register_editable(m);
   m.def("read_volume_mesh", &read_volume_mesh, py::arg("path"));
   m.def("write_volume_mesh", &write_volume_mesh, py::arg("path"), py::arg("points"), py::arg("tetrahedra"),
         py::arg("regions"), py::arg("triangles"), py::arg("triangle_ids"), py::arg("format"));

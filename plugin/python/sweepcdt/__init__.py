@@ -4,13 +4,14 @@
     points, triangles = sweepcdt.read_surface("part.stl")
     mesh = sweepcdt.tetrahedralize(points, triangles)      # a TetMesh: points, tetrahedra, regions, ...
     mesh.to_meshio().write("part.vtu")                     # with meshio installed
+    edit = sweepcdt.EditableCdt.from_tet_mesh(mesh)         # delete vertices (paper §5)
     sweepcdt.mesh_file("part.stl", "part.inp")              # file to file, as `sweepcdt mesh` does
 
 Options are the converter's (``sweepcdt help mesh``), spelled the same: ``algorithm``
 ("sweep-sphere", "sweep-plane", "giftwrap"), ``steiner`` ("auto", "none"), ``facets``
 ("triangles", "coplanar"), ``snap`` (None, or a tolerance such as 1e-12), ``check``; their defaults
 are the converter's (``sweepcdt.DEFAULTS``). Failures raise the exceptions of ``sweepcdt.errors``
-(``InvalidInputError``, ``NoCdtError``, ``OutputError``, ``CheckError``), bad arrays ``ValueError``;
+(``InvalidInputError``, ``NoCdtError``, ``VertexRemovalError``, ``OutputError``, ``CheckError``), bad arrays ``ValueError``;
 computations release the GIL, and Ctrl-C raises KeyboardInterrupt after cancelling cleanly.
 """
 
@@ -25,12 +26,14 @@ from ._sweepcdt import read_surface as _read_surface
 from ._sweepcdt import read_volume_mesh as _read_volume_mesh
 from ._sweepcdt import tetrahedralize as _tetrahedralize
 from ._sweepcdt import write_volume_mesh as _write_volume_mesh
-from .errors import CancelledError, CheckError, Error, InvalidInputError, NoCdtError, OutputError
+from .editable import EditableCdt, EditedTriangulation, RemovalReport
+from .errors import CancelledError, CheckError, Error, InvalidInputError, NoCdtError, OutputError, VertexRemovalError
 from .result import Surface, TetMesh, Triangulation
 
 __all__ = [
     "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "check_files", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
-    "Error", "InvalidInputError", "NoCdtError", "OutputError", "CheckError", "CancelledError",
+    "EditableCdt", "EditedTriangulation", "RemovalReport",
+    "Error", "InvalidInputError", "NoCdtError", "VertexRemovalError", "OutputError", "CheckError", "CancelledError",
 ]
 
 #: The converter's defaults (read from its own option parser), used by every function here.
@@ -91,7 +94,7 @@ def mesh_file(input, output, *, format=None, algorithm=DEFAULTS["algorithm"], st
 
 
 def cdt(points, simplices, *, exterior=None, tags=None, algorithm=DEFAULTS["algorithm"], steiner="none",
-        check=False, progress=None):
+        facets=DEFAULTS["facets"], check=False, progress=None):
     """The constrained Delaunay triangulation of a PLC in dimension D = 2..5 (``sweepcdt cdt``).
 
     points: (n, D) real array; simplices: (m, D) point ids, the constraining (D-1)-simplices
@@ -99,9 +102,12 @@ def cdt(points, simplices, *, exterior=None, tags=None, algorithm=DEFAULTS["algo
     integers per simplex: -1 if its negative side is exterior, 1 if its positive side is, 0 if
     neither (the positive side of (f_0..f_{D-1}) holds the p with orient(f_0, ..., f_{D-1}, p) > 0;
     a closed surface counterclockwise from outside has -1 everywhere). tags: None or (m,) ids.
-    steiner: "none" (default: the PLC as given) or "auto" (D = 3 only). Returns a Triangulation.
+    steiner: "none" (default: the PLC as given) or "auto" (D = 3 only). facets (D = 3 only):
+    "coplanar" (default: exactly coplanar neighbouring triangles form one facet, triangulated anew
+    by its 2D CDT) or "triangles" (each triangle stays a constraint as given). Returns a
+    Triangulation.
     """
-    return Triangulation(_cdt(points, simplices, exterior, tags, algorithm, steiner, check, progress))
+    return Triangulation(_cdt(points, simplices, exterior, tags, algorithm, steiner, facets, check, progress))
 
 
 def read_volume_mesh(path):
