@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "brute_force_cdt.h"
+#include "random_plc.h"
 #include "brute_force_delaunay.h"
 #include "simplex_tiling.h"
 #include "sweepcdt/cdt.h"
@@ -319,32 +320,6 @@ TEST(BruteForceCdtOracle, VisibleThroughAGap3D) {
 
 // ---- random constrained PLCs, every algorithm against the oracle ---------------------------------
 
-// `inner` points on the grid {1,2,3}^D, `outer` on {0,..,4}^D (all distinct): the constraints are
-// drawn among the inner points, so they lie in the middle with vertices on both sides of them.
-template <int D>
-Plc<D> random_constrained_plc(std::mt19937_64& rng, int inner, int outer, int constraints) {
-  Plc<D> plc;
-  std::set<std::vector<double>> seen;
-  auto draw = [&](int count, int lo, int hi) {
-    std::uniform_int_distribution<int> coordinate(lo, hi);
-    for (int drawn = 0; drawn < count;) {
-      std::vector<double> p(D);
-      for (auto& x : p) x = coordinate(rng);
-      if (seen.insert(p).second) plc.points.insert(plc.points.end(), p.begin(), p.end()), ++drawn;
-    }
-  };
-  draw(inner, 1, 3);
-  draw(outer, 0, 4);
-  std::uniform_int_distribution<uint32_t> pick(0, static_cast<uint32_t>(inner - 1));
-  for (int tries = 0; tries < 200 && static_cast<int>(plc.num_simplices()) < constraints; ++tries) {
-    std::vector<uint32_t> c(D);
-    for (auto& x : c) x = pick(rng);
-    plc.simplices.insert(plc.simplices.end(), c.begin(), c.end());
-    if (!find_problems(plc).empty()) plc.simplices.resize(plc.simplices.size() - D);
-  }
-  return plc;
-}
-
 // A wall in the hyperplane x_a = 2 (a random axis): the simplex with vertices 0 and (3D - 2) e_i in
 // the other coordinates (reflected along random axes), which covers their middle [1, 3]^{D-1}; with
 // `split`, cut in two at the midpoint of an edge (two constraints sharing a ridge). The other points
@@ -402,7 +377,7 @@ void random_against_oracle(int seeds, int inner, int outer, int constraints) {
   Tally tally;
   for (int seed = 0; seed < seeds; ++seed) {
     std::mt19937_64 rng(4200 * D + seed);
-    const Plc<D> plc = seed % 2 ? random_constrained_plc<D>(rng, inner, outer, 1 + seed % constraints)
+    const Plc<D> plc = seed % 2 ? fixtures::random_constrained_plc<D>(rng, inner, outer, 1 + seed % constraints)
                                 : random_wall_plc<D>(rng, inner + outer, (seed / 2) % 2);
     if (plc.num_simplices() == 0) continue;
     compare_with_algorithms(plc, "D=" + std::to_string(D) + " seed " + std::to_string(seed), tally);

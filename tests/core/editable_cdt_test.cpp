@@ -7,9 +7,13 @@
 // Steiner points of a PLC that has no CDT without them.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <random>
 #include <string>
 
+#include "brute_force_cdt.h"
+#include "random_plc.h"
+#include "simplex_tiling.h"
 #include "star_shapes.h"
 #include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/validate.h"
@@ -232,6 +236,52 @@ TEST(EditableCdt, DeletionsThatLeaveNoCdt) {
   const auto last = mesh.snapshot();
   EXPECT_TRUE(validate_triangulated(last.triangulation, last.plc).ok());
 }
+
+// The brute-force oracle (paper §1's definition, exact LP visibility) on small constrained PLCs with
+// grid ties: for every vertex, a deletion succeeds exactly when the oracle's constrained Delaunay
+// simplices of the PLC left triangulate it (vertex-id perturbation), and then equals them.
+template <int D>
+void against_brute_force(int inner, int outer, int constraints, int seeds) {
+  int agreed = 0, refused = 0;
+  for (int seed = 0; seed < seeds; ++seed) {
+    std::mt19937_64 rng(500 * D + seed);
+    const Plc<D> plc = fixtures::random_constrained_plc<D>(rng, inner, outer, constraints);
+    Triangulation<D> tri;
+    try {
+      tri = cdt(plc);
+    } catch (const NoCdtError&) {
+      continue;
+    }
+    if (!tri.perturbation_rank.empty()) continue;
+    for (uint32_t v = 0; v < plc.num_points(); ++v) {
+      EditableCdt<D> mesh(plc, tri);
+      Plc<D> left;
+      try {
+        left = mesh.plc_without(v);
+      } catch (const VertexRemovalError&) {
+        continue;
+      }
+      const auto oracle = fixtures::brute_force_cdt<D>(left);
+      const bool has_cdt = fixtures::tiling_report<D>(left, oracle.simplices).triangulation();
+      const std::string what = "D=" + std::to_string(D) + " seed " + std::to_string(seed) + " vertex " + std::to_string(v);
+      try {
+        mesh.remove_vertex(v);
+        EXPECT_TRUE(has_cdt) << what;
+        EXPECT_EQ(fixtures::simplex_set(mesh.snapshot().triangulation), oracle.simplices) << what;
+      } catch (const NoCdtError&) {
+        EXPECT_FALSE(has_cdt) << what;
+        ++refused;
+      } catch (const VertexRemovalError& e) {
+        ADD_FAILURE() << what << ": plc_without() accepted it, remove_vertex() refused: " << e.what();
+      }
+      ++agreed;
+    }
+  }
+  EXPECT_GT(agreed, seeds) << "too few deletions compared";
+  std::cout << "[ oracle ] D=" << D << ": " << agreed << " deletions compared, " << refused << " refused without a CDT\n";
+}
+TEST(EditableCdt, AgreesWithBruteForce2) { against_brute_force<2>(5, 4, 3, 30); }
+TEST(EditableCdt, AgreesWithBruteForce3) { against_brute_force<3>(5, 4, 2, 30); }
 
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {
   const Plc<3> cube = fixtures::unit_cube_surface();

@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "../facet_hash.h"
 #include "../ids_text.h"
@@ -59,6 +61,13 @@ struct EditableCdt<D>::Impl {
   static Key sorted(Key k) {
     std::sort(k.begin(), k.end());
     return k;
+  }
+  // The facet of simplex t of `tri` opposite its vertex i, in the simplex's order.
+  static Key facet_of(const Triangulation<D>& tri, uint32_t t, int i) {
+    Key f;
+    for (int k = 0, j = 0; k <= D; ++k)
+      if (k != i) f[j++] = tri.simplex(t)[k];
+    return f;
   }
   // The facet of simplex t opposite its vertex i, in the simplex's order.
   Key facet(uint32_t t, int i) const {
@@ -126,13 +135,13 @@ struct EditableCdt<D>::Impl {
   // --- the star of v -----------------------------------------------------------------------------
   std::vector<uint32_t> star_of(uint32_t v) const {
     std::vector<uint32_t> star{simplex_at[v]};
+    std::unordered_set<uint32_t> seen{simplex_at[v]};
     for (std::size_t k = 0; k < star.size(); ++k) {
       const uint32_t t = star[k];
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
         if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
-        const uint32_t u = across / (D + 1);
-        if (std::find(star.begin(), star.end(), u) == star.end()) star.push_back(u);
+        if (seen.insert(across / (D + 1)).second) star.push_back(across / (D + 1));
       }
     }
     return star;
@@ -248,6 +257,15 @@ struct EditableCdt<D>::Impl {
   // D-simplex of them (a star simplex with v swapped for another link vertex), checked exactly to lie
   // strictly inside it.
   std::array<double, D> point_inside_hull_left(uint32_t v, const std::vector<uint32_t>& star) const {
+    // First a simplex outside the star: across a link face.
+    for (uint32_t t : star)
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
+        if (simplex(t)[i] != v || across == kNone) continue;
+        std::array<uint32_t, D + 1> sigma;
+        std::copy_n(simplex(across / (D + 1)), D + 1, sigma.begin());
+        if (const auto c = centroid_strictly_inside(sigma)) return *c;
+      }
     for (uint32_t t : star) {
       for (uint32_t u : star)
         for (int j = 0; j <= D; ++j) {
@@ -256,22 +274,7 @@ struct EditableCdt<D>::Impl {
           std::array<uint32_t, D + 1> sigma;
           std::copy_n(simplex(t), D + 1, sigma.begin());
           *std::find(sigma.begin(), sigma.end(), v) = w;
-          const auto coords = [&](int replaced, const double* x) {
-            predicates::Coords<D + 1> c;
-            for (int k = 0; k <= D; ++k) c[k] = k == replaced ? x : point(sigma[k]);
-            return c;
-          };
-          const Sign whole = predicates::orient<D>(coords(-1, nullptr));
-          if (whole == Sign::Zero) continue;
-          std::array<double, D> centroid{};
-          for (int k = 0; k < D; ++k) {
-            double sum = 0;
-            for (uint32_t x : sigma) sum += point(x)[k];
-            centroid[k] = sum / (D + 1);
-          }
-          bool strictly = true;
-          for (int k = 0; k <= D && strictly; ++k) strictly = predicates::orient<D>(coords(k, centroid.data())) == whole;
-          if (strictly) return centroid;
+          if (const auto c = centroid_strictly_inside(sigma)) return *c;
         }
     }
     throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: no point found strictly inside the convex hull left");
@@ -283,9 +286,7 @@ struct EditableCdt<D>::Impl {
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i)
         if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) {
-          Key f;
-          for (int k = 0, j = 0; k <= D; ++k)
-            if (k != i) f[j++] = fill.simplex(t)[k];
+          const Key f = facet_of(fill, t, i);
           faces.push_back({f, (D - i) % 2 == 0 ? -1 : 1});
         }
     return faces;
@@ -304,9 +305,7 @@ struct EditableCdt<D>::Impl {
     std::unordered_map<Key, int, TupleHash> faces_of_fill;
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i) {
-        Key f;
-        for (int k = 0, j = 0; k <= D; ++k)
-          if (k != i) f[j++] = fill.simplex(t)[k];
+        const Key f = facet_of(fill, t, i);
         ++faces_of_fill[sorted(f)];
       }
     Plc<D> region;
@@ -341,9 +340,7 @@ struct EditableCdt<D>::Impl {
     std::unordered_map<Key, bool, TupleHash> covered;
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i) {
-        Key f;
-        for (int k = 0, j = 0; k <= D; ++k)
-          if (k != i) f[j++] = fill.simplex(t)[k];
+        const Key f = facet_of(fill, t, i);
         covered[sorted(f)] = true;
         if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && !link_of.count(sorted(f)) && !constraint_of.count(sorted(f)))
           hull.push_back({f, fill.simplex(t)[i]});
@@ -402,6 +399,26 @@ struct EditableCdt<D>::Impl {
       if (!kept.count(x)) no_cdt(v, "vertex " + std::to_string(x) + " would be left outside the new convex hull", {x});
   }
 
+  // The rounded centroid of simplex sigma if it lies strictly inside it (exact test).
+  std::optional<std::array<double, D>> centroid_strictly_inside(const std::array<uint32_t, D + 1>& sigma) const {
+    const auto coords = [&](int replaced, const double* x) {
+      predicates::Coords<D + 1> c;
+      for (int k = 0; k <= D; ++k) c[k] = k == replaced ? x : point(sigma[k]);
+      return c;
+    };
+    const Sign whole = predicates::orient<D>(coords(-1, nullptr));
+    if (whole == Sign::Zero) return std::nullopt;
+    std::array<double, D> centroid{};
+    for (int k = 0; k < D; ++k) {
+      double sum = 0;
+      for (uint32_t x : sigma) sum += point(x)[k];
+      centroid[k] = sum / (D + 1);
+    }
+    for (int k = 0; k <= D; ++k)
+      if (predicates::orient<D>(coords(k, centroid.data())) != whole) return std::nullopt;
+    return centroid;
+  }
+
   // The old hull face at ridge r outside the star: walk around r from a link face's outside
   // neighbour until a facet without a neighbour; returns its vertex off r (kNone if none).
   uint32_t old_hull_apex(const std::array<uint32_t, D - 1>& r, const std::vector<uint32_t>& star, const std::vector<LinkFace>& link) const {
@@ -455,9 +472,7 @@ struct EditableCdt<D>::Impl {
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i)
         if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) {
-          Key f;
-          for (int k = 0, j = 0; k <= D; ++k)
-            if (k != i) f[j++] = fill.simplex(t)[k];
+          const Key f = facet_of(fill, t, i);
           inner_of.emplace(sorted(f), t);
         }
     for (const LinkFace& face : link) {

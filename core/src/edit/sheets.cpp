@@ -262,17 +262,15 @@ std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<ui
   return SheetBuilder<D>(v, through_v, point, order, same_facet).run();
 }
 
-template std::vector<Sheet<2>> sheets_without<2>(uint32_t, const std::vector<std::array<uint32_t, 2>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
-                                                 const std::function<bool(uint32_t, uint32_t)>&);
-template std::vector<Sheet<3>> sheets_without<3>(uint32_t, const std::vector<std::array<uint32_t, 3>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
-                                                 const std::function<bool(uint32_t, uint32_t)>&);
-template std::vector<Sheet<4>> sheets_without<4>(uint32_t, const std::vector<std::array<uint32_t, 4>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
-                                                 const std::function<bool(uint32_t, uint32_t)>&);
-template std::vector<Sheet<5>> sheets_without<5>(uint32_t, const std::vector<std::array<uint32_t, 5>>&,
-                                                 const std::function<const double*(uint32_t)>&, const std::function<uint32_t(uint32_t)>&,
-                                                 const std::function<bool(uint32_t, uint32_t)>&);
+#define SWEEPCDT_INSTANTIATE(D)                                                                                       \
+  template std::vector<Sheet<D>> sheets_without<D>(uint32_t, const std::vector<std::array<uint32_t, D>>&,                    \
+                                                   const std::function<const double*(uint32_t)>&,                            \
+                                                   const std::function<uint32_t(uint32_t)>&,                                 \
+                                                   const std::function<bool(uint32_t, uint32_t)>&);
+SWEEPCDT_INSTANTIATE(2)
+SWEEPCDT_INSTANTIATE(3)
+SWEEPCDT_INSTANTIATE(4)
+SWEEPCDT_INSTANTIATE(5)
+#undef SWEEPCDT_INSTANTIATE
 
 }  // namespace sweepcdt::detail
