@@ -37,7 +37,7 @@ def assert_is_cdt_of_its_plc(snap):
 
 
 def cube_with_inner_points(d, inner, seed):
-    """The unit d-cube's corners (hull vertices: not deletable) then `inner` random inner points."""
+    """The unit d-cube's corners (its hull vertices) then `inner` random inner points."""
     corners = np.array(np.meshgrid(*[[0.0, 1.0]] * d, indexing="ij")).reshape(d, -1).T
     rng = np.random.default_rng(seed)
     return np.vstack([corners, rng.uniform(0.05, 0.95, size=(inner, d))]), len(corners)
@@ -102,21 +102,35 @@ def test_face_centres_of_a_tetrahedralized_box(facets):
     assert_is_cdt_of_its_plc(snap)
 
 
+def unit_cube_surface():
+    """The unit cube's corners (point i = (i&1, (i>>1)&1, (i>>2)&1)), 12 triangles CCW from outside."""
+    points = np.array([[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], dtype=float)
+    triangles = np.array([[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
+                          [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]])
+    return points, triangles
+
+
 def test_refusals_are_reported_and_change_nothing():
+    cube, triangles = unit_cube_surface()
+    solid = sweepcdt.EditableCdt(cube, triangles, exterior=-np.ones(12, dtype=int), facets="triangles")
+    with pytest.raises(sweepcdt.VertexRemovalError) as facet_corner:
+        solid.remove_vertex(0)
+    assert facet_corner.value.vertex == 0 and isinstance(facet_corner.value, ValueError)
+    assert solid.num_vertices == 8
+
     points, corners = cube_with_inner_points(3, 20, seed=5)
     edit = sweepcdt.EditableCdt(points)
     before = edit.snapshot()
-    with pytest.raises(sweepcdt.VertexRemovalError) as hull_corner:
-        edit.remove_vertex(0)
-    assert hull_corner.value.vertex == 0 and isinstance(hull_corner.value, ValueError)
     for bad in (-1, len(points), 2**40):
         with pytest.raises(sweepcdt.VertexRemovalError):
             edit.remove_vertex(bad)
     after = edit.snapshot()
     assert simplex_set(after.simplices) == simplex_set(before.simplices)
+    # A hull corner goes too (paper §5: the vertex may lie on the boundary); a vertex already gone
+    # or missing is refused, and the rest go on.
     report = edit.remove_vertices([corners, 1, corners, len(points), corners + 1])
-    assert report.removed == [corners, corners + 1]
-    assert report.refused_ids == [1, corners, len(points)]  # hull corner, already gone, no such vertex
+    assert report.removed == [corners, 1, corners + 1]
+    assert report.refused_ids == [corners, len(points)]  # already gone, no such vertex
     assert all(isinstance(e, sweepcdt.VertexRemovalError) for _, e in report.refused)
     assert_is_cdt_of_its_plc(edit.snapshot())
     with pytest.raises(TypeError):

@@ -38,7 +38,7 @@ class VertexRemovalError(Error, ValueError):
     """``EditableCdt`` cannot delete this vertex (the mesh is left unchanged): it is not a vertex of
     the triangulation (never was, or already deleted), or a corner of a constraining facet (deleting
     it would change the facet's shape), or a case not implemented — a vertex on the boundary of a
-    convex-hull domain, or on the boundary of a facet in D = 2 or D >= 4. ``vertex`` is its id. (A
+    facet in D >= 4. ``vertex`` is its id. (A
     deletion that would leave a PLC without a CDT raises ``NoCdtError`` instead, also with
     ``vertex``.) The exit code is that of a usage error: the caller named the wrong vertex."""
 
