@@ -281,7 +281,47 @@ void against_brute_force(int inner, int outer, int constraints, int seeds) {
   std::cout << "[ oracle ] D=" << D << ": " << agreed << " deletions compared, " << refused << " refused without a CDT\n";
 }
 TEST(EditableCdt, AgreesWithBruteForce2) { against_brute_force<2>(5, 4, 3, 30); }
-TEST(EditableCdt, AgreesWithBruteForce3) { against_brute_force<3>(5, 4, 2, 30); }
+TEST(EditableCdt, AgreesWithBruteForce3) { against_brute_force<3>(6, 4, 3, 60); }
+
+// A constraining triangle split at the midpoint v of its edge ab (two constraints), among random
+// grid points near that edge: v makes ab's halves Delaunay, and without v some of these PLCs have no
+// CDT. Every deletion of v must agree with the brute-force oracle on the PLC left — refused exactly
+// when it has none.
+TEST(EditableCdt, DeletingASplitPointAgreesWithBruteForce) {
+  int compared = 0, refused = 0;
+  for (int seed = 0; seed < 300; ++seed) {
+    std::mt19937_64 rng(7000 + seed);
+    Plc<3> plc;
+    plc.points = {0, 0, 0, 4, 0, 0, 2, 3, 0, 2, 0, 0};  // a, b, c, v
+    plc.simplices = {0, 3, 2, 3, 1, 2};
+    std::uniform_int_distribution<int> x(-1, 5), y(-2, 2), z(1, 2), sign(0, 1);
+    for (int k = 0; k < 5; ++k) plc.points.insert(plc.points.end(), {double(x(rng)), double(y(rng)), double(sign(rng) ? z(rng) : -z(rng))});
+    if (!find_problems(plc).empty()) continue;
+    Triangulation<3> tri;
+    try {
+      tri = cdt(plc);
+    } catch (const NoCdtError&) {
+      continue;
+    }
+    if (!tri.perturbation_rank.empty()) continue;
+    EditableCdt<3> mesh(plc, tri);
+    const Plc<3> left = mesh.plc_without(3);
+    const auto oracle = fixtures::brute_force_cdt<3>(left);
+    const bool has_cdt = fixtures::tiling_report<3>(left, oracle.simplices).triangulation();
+    ++compared;
+    try {
+      mesh.remove_vertex(3);
+      EXPECT_TRUE(has_cdt) << "seed " << seed;
+      EXPECT_EQ(fixtures::simplex_set(mesh.snapshot().triangulation), oracle.simplices) << "seed " << seed;
+    } catch (const NoCdtError&) {
+      ++refused;
+      EXPECT_FALSE(has_cdt) << "seed " << seed;
+    }
+  }
+  std::cout << "[ oracle ] " << compared << " split points deleted or refused, " << refused << " refused without a CDT\n";
+  EXPECT_GT(compared, 100);
+  EXPECT_GT(refused, 0) << "no PLC without a CDT: the refusal is not exercised";
+}
 
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {
   const Plc<3> cube = fixtures::unit_cube_surface();
