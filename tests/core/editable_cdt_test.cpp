@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <map>
 #include <random>
 #include <string>
 
@@ -321,6 +322,56 @@ TEST(EditableCdt, DeletingASplitPointAgreesWithBruteForce) {
   std::cout << "[ oracle ] " << compared << " split points deleted or refused, " << refused << " refused without a CDT\n";
   EXPECT_GT(compared, 100);
   EXPECT_GT(refused, 0) << "no PLC without a CDT: the refusal is not exercised";
+}
+
+// Re-triangulated facets are their own 2D CDTs, also in a plane oblique to every axis (where the
+// projection the star CDT runs on distorts circles): every edge between two coplanar constraining
+// triangles is locally Delaunay in their plane (the in-circle test as an insphere with a point off
+// the plane). The tetrahedron's facet x + y + 2z = 24 holds many points; all are deleted in turn.
+TEST(EditableCdt, ObliqueFacetsStayDelaunayInTheirPlane) {
+  std::vector<double> points = {0, 0, 0, 24, 0, 0, 0, 24, 0, 0, 0, 12, 5, 5, 3, 9, 4, 2};
+  std::mt19937_64 rng(21);
+  std::uniform_int_distribution<int> coin(0, 2);
+  for (int z = 1; z <= 10; ++z)
+    for (int x = 1; x + 2 * z < 24; ++x)
+      if (coin(rng) == 0) points.insert(points.end(), {double(x), double(24 - 2 * z - x), double(z)});
+  const Plc<3> plc = hull_bounded<3>(points);
+  EditableCdt<3> mesh(plc, cdt(plc));
+  const auto in_plane_delaunay = [](const Plc<3>& now) {
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, uint32_t>>> edges;  // -> (triangle, apex)
+    for (uint32_t t = 0; t < now.num_simplices(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t x = now.simplex(t)[(i + 1) % 3], y = now.simplex(t)[(i + 2) % 3];
+        edges[{std::min(x, y), std::max(x, y)}].push_back({t, now.simplex(t)[i]});
+      }
+    int checked = 0;
+    for (const auto& [edge, on] : edges) {
+      if (on.size() != 2) continue;
+      const double *x = now.point(edge.first), *y = now.point(edge.second), *p = now.point(on[0].second), *q = now.point(on[1].second);
+      if (predicates::orient<3>({x, y, p, q}) != predicates::Sign::Zero) continue;  // not coplanar: a ridge of the box
+      const double off[3] = {x[0] + 1, x[1] + 2, x[2] + 5};  // off every face of this simplex
+      const predicates::Vertices<4> s{{{x, edge.first}, {y, edge.second}, {p, on[0].second}, {off, kNone - 1}}};
+      if (predicates::inside_circumsphere<3>(s, {q, on[1].second})) return -1;
+      ++checked;
+    }
+    return checked;
+  };
+  ASSERT_GT(in_plane_delaunay(plc), 0);
+  int deleted = 0;
+  for (uint32_t v = 0; v < plc.num_points(); ++v) {
+    const double* p = plc.point(v);
+    if (p[0] + p[1] + 2 * p[2] != 24 || p[0] == 0 || p[1] == 0 || p[2] == 0) continue;  // on the oblique facet only
+    try {
+      mesh.remove_vertex(v);
+      ++deleted;
+    } catch (const Error&) {
+      continue;
+    }
+    const auto now = mesh.snapshot();
+    ASSERT_GE(in_plane_delaunay(now.plc), 0) << "after deleting " << v;
+    ASSERT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(now.plc))) << "after deleting " << v;
+  }
+  EXPECT_GT(deleted, 20);
 }
 
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {

@@ -9,6 +9,7 @@
 #include "../ids_text.h"
 #include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/predicates/orientation.h"
+#include "sweepcdt/predicates/perturbation.h"
 #include "../sweep/sweep_cdt.h"
 #include "sweepcdt/validate.h"
 
@@ -242,6 +243,45 @@ class SheetBuilder {
         if (want == Sign::Negative) std::swap(s[0], s[1]);  // star_cdt's simplices are positively oriented
         sheet.fill.push_back(s);
       }
+      if constexpr (D == 3) flip_to_in_plane_delaunay(sheet.fill, axis, want);
+    }
+  }
+
+  // The projection's CDT is a CDT for the projected metric; in a plane oblique to the axes it need
+  // not be the facet's own. Lawson's flips make it so: the in-circle test of coplanar points is the
+  // insphere test with a point e off their plane (facet_flips.h; e's perturbation term vanishes),
+  // under the perturbation order of the points. Flips stay inside the hole (its boundary edges have
+  // one triangle) and keep each triangle oriented like the sheet.
+  void flip_to_in_plane_delaunay(std::vector<std::array<uint32_t, D>>& fill, int axis, Sign want) const {
+    if (fill.size() < 2) return;
+    const double *a = point_(fill[0][0]), *b = point_(fill[0][1]), *c = point_(fill[0][2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double e[3] = {a[0] + u[1] * w[2] - u[2] * w[1], a[1] + u[2] * w[0] - u[0] * w[2], a[2] + u[0] * w[1] - u[1] * w[0]};
+    if (predicates::orient<3>({a, b, c, e}) == Sign::Zero) return;  // rounding put e in the plane: keep the projection's
+    const auto vertex = [&](uint32_t x) { return predicates::Vertex{point_(x), order_(x)}; };
+    const auto oriented = [&](uint32_t x, uint32_t y, uint32_t z) { return projected_orient({x, y}, z, axis) == want; };
+    for (std::size_t flips = 0; flips <= fill.size() * fill.size();) {
+      std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<std::size_t, int>>> edges;  // -> (triangle, apex slot)
+      for (std::size_t t = 0; t < fill.size(); ++t)
+        for (int i = 0; i < 3; ++i) {
+          const uint32_t x = fill[t][(i + 1) % 3], y = fill[t][(i + 2) % 3];
+          edges[{std::min(x, y), std::max(x, y)}].push_back({t, i});
+        }
+      bool flipped = false;
+      for (const auto& [edge, on] : edges) {
+        if (on.size() != 2) continue;
+        const auto [t1, i1] = on[0];
+        const auto [t2, i2] = on[1];
+        const uint32_t x = fill[t1][(i1 + 1) % 3], y = fill[t1][(i1 + 2) % 3], p = fill[t1][i1], q = fill[t2][i2];
+        if (!predicates::inside_circumsphere<3>({vertex(x), vertex(y), vertex(p), {e, kNone - 1}}, vertex(q))) continue;
+        if (!oriented(x, q, p) || !oriented(y, p, q)) continue;  // not a convex quadrilateral
+        fill[t1] = {x, q, p};
+        fill[t2] = {y, p, q};
+        flipped = true;
+        ++flips;
+        break;
+      }
+      if (!flipped) return;
     }
   }
 
