@@ -21,7 +21,7 @@ namespace sweepcdt::cli::testing {
 namespace {
 
 // Gift-wrapping these takes far longer than the tests wait: they are always interrupted.
-const fs::path kLongInput = shared_data() / "drc/knot1.drc";
+const fs::path kLongInput = shared_data() / "stl_binary/thingi_1706459.stl";
 
 // Hang guard only: the runs below reach the awaited output within a few seconds of work; this bounds
 // a broken run, it is not a timing the tests rely on.
@@ -75,14 +75,15 @@ std::function<bool()> log_says(const std::string& log, const std::string& text) 
   return [=] { return bytes_of(log).find(text) != std::string::npos; };
 }
 
-// Ctrl-C during a long run (gift-wrapping the knot takes minutes): exit 130, a message, no output.
+// Ctrl-C during a long run (gift-wrapping the refined thingi surface takes minutes; the knot, which
+// these tests used, now takes 2 s): exit 130, a message, no output.
 TEST(CliProgress, CtrlCCancelsCleanly) {
   SWEEPCDT_REQUIRE_SHARED_DATA();
   TempDir dir;
   const std::string input = kLongInput.string();
   const std::string log = (dir.path() / ".log").string();
   const auto [status, seconds] =
-      run_and_interrupt({input, "-o", (dir.path() / "knot1.mesh").string(), "--algorithm", "giftwrap"}, log,
+      run_and_interrupt({input, "-o", (dir.path() / "thingi.mesh").string(), "--algorithm", "giftwrap"}, log,
                         log_says(log, input + ": gift-wrapping ("));
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
@@ -98,12 +99,15 @@ TEST(CliProgress, CtrlCCancelsABatch) {
   TempDir dir;
   const auto out = dir.path() / "out";
   const std::string log = (dir.path() / ".log").string();
+  // Two long runs (copies of one surface under two names), then a short one.
+  const auto first = dir.path() / "first.stl", second = dir.path() / "second.stl";
+  fs::copy_file(kLongInput, first);
+  fs::copy_file(kLongInput, second);
   const auto [status, seconds] = run_and_interrupt(
-      {"mesh", kLongInput.string(), (shared_data() / "glb/moon.glb").string(),
-       (shared_data() / "off/icosahedron.off").string(), "--out-dir", out.string(), "--threads", "2", "--algorithm", "giftwrap",
-       "--stats", (dir.path() / "stats.json").string()},
+      {"mesh", first.string(), second.string(), (shared_data() / "off/icosahedron.off").string(), "--out-dir", out.string(),
+       "--threads", "2", "--algorithm", "giftwrap", "--stats", (dir.path() / "stats.json").string()},
       log, [&] {  // both threads busy gift-wrapping, so the third file cannot have started
-        return log_says(log, kLongInput.string() + ": gift-wrapping (")() && log_says(log, "moon.glb: gift-wrapping (")();
+        return log_says(log, first.string() + ": gift-wrapping (")() && log_says(log, second.string() + ": gift-wrapping (")();
       });
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   EXPECT_EQ(WEXITSTATUS(status), 130) << bytes_of(log);
