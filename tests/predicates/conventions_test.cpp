@@ -152,6 +152,37 @@ TYPED_TEST(Conventions, OrientProjected) {
   }
 }
 
+// collinear(a, b, c) against the rational reference: every projection onto a coordinate plane has
+// orientation zero. Half the cases are exactly collinear by construction (c = a + k (b - a) on the
+// grid), some of those nudged by one ulp.
+TYPED_TEST(Conventions, Collinear) {
+  constexpr int D = TypeParam::value;
+  if constexpr (D >= 2) {
+    Rng rng(0x5eed0009 + D);
+    int on_line = 0, off_line = 0;
+    for (int n = 0; n < 600; ++n) {
+      const Point<D> a = grid_point<D>(rng, -3, 3), b = grid_point<D>(rng, -3, 3);
+      Point<D> c = grid_point<D>(rng, -3, 3);
+      if (n % 2) {
+        const int k = static_cast<int>(n % 7) - 2;
+        for (int i = 0; i < D; ++i) c[i] = a[i] + k * (b[i] - a[i]);
+        if (n % 5 == 0) c[n % D] = std::nextafter(c[n % D], 100.0);
+      }
+      bool expected = true;
+      for (int i = 0; i < D && expected; ++i)
+        for (int j = i + 1; j < D && expected; ++j) {
+          const std::vector<ref::Vec> q{{ref::exact(a[i]), ref::exact(a[j])}, {ref::exact(b[i]), ref::exact(b[j])},
+                                        {ref::exact(c[i]), ref::exact(c[j])}};
+          expected = ref::orient(q) == 0;
+        }
+      ASSERT_EQ(pr::collinear<D>(a.data(), b.data(), c.data()), expected) << dump<D>(std::array<const double*, 3>{a.data(), b.data(), c.data()});
+      (expected ? on_line : off_line)++;
+    }
+    EXPECT_GT(on_line, 100);
+    EXPECT_GT(off_line, 100);
+  }
+}
+
 TEST(PredicateStats, ConsistentWithBuildOption) {
   if (!pr::predicate_stats_enabled()) {
     const auto s = pr::predicate_stats();

@@ -214,6 +214,20 @@ SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)
 SWEEPCDT_INSTANTIATE(5)
 #undef SWEEPCDT_INSTANTIATE
+template <int D>
+bool collinear(const double* a, const double* b, const double* c) {
+  for (int i = 0; i < D; ++i)
+    for (int j = i + 1; j < D; ++j) {
+      const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
+      if (orient<2>({pa, pb, pc}) != Sign::Zero) return false;
+    }
+  return true;
+}
+
+template bool collinear<2>(const double*, const double*, const double*);
+template bool collinear<3>(const double*, const double*, const double*);
+template bool collinear<4>(const double*, const double*, const double*);
+template bool collinear<5>(const double*, const double*, const double*);
 template Sign orient_projected<2>(const Coords<2>&, int);
 template Sign orient_projected<3>(const Coords<3>&, int);
 template Sign orient_projected<4>(const Coords<4>&, int);

@@ -280,18 +280,6 @@ Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Ver
 // non-zero entry belongs to the first delta vertex off aff(f), and its sign needs one perturbed
 // insphere and a few orientations — instead of exact zeros, term by term, whenever a delta vertex
 // lies on aff(f) (the star sweep's centre on a facet through it, seeds on CAD planes).
-// Are a, b, q on one line (a != b)? Every 2x2 minor of (b - a, q - a) vanishes: exact orientations
-// of the projections onto the coordinate planes.
-template <int D>
-bool collinear(const double* a, const double* b, const double* q) {
-  for (int i = 0; i < D; ++i)
-    for (int j = i + 1; j < D; ++j) {
-      const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pq[2] = {q[i], q[j]};
-      if (orient<2>({pa, pb, pq}) != Sign::Zero) return false;
-    }
-  return true;
-}
-
 template <int D>
 Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>& t, int apex, const Vertex* delta, const int8_t* toward, int n) {
   const auto side = [&](const double* x) {

@@ -238,7 +238,7 @@ struct EditableCdt<D>::Impl {
     if (on_hull && fill.num_simplices() == 0 && live_simplices == star.size())
       throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the points left span no " + std::to_string(D) + "-dimensional simplex");
     const Plc<D> region = on_hull ? closed_over_new_hull(v, cavity, fill, added.size()) : Plc<D>{};
-    if (fill.num_simplices() > 0) {
+    if (!on_hull || fill.num_simplices() > 0) {  // on the hull the star may just vanish (its link faces become hull)
       const ValidationReport report = validate(fill, on_hull ? region : cavity);
       if (!report.ok())
         no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
@@ -527,7 +527,6 @@ struct EditableCdt<D>::Impl {
     for (auto& s : slot) s = new_slot();
     std::unordered_map<Key, const LinkFace*, TupleHash> link_of;
     for (const LinkFace& f : link) link_of.emplace(f.key, &f);
-    std::vector<uint32_t> unseeded;
     for (uint32_t t = 0; t < fill.num_simplices(); ++t) {
       const uint32_t g = slot[t];
       std::copy_n(fill.simplex(t), D + 1, simplex(g));

@@ -110,17 +110,9 @@ class SheetBuilder {
     return p;
   }
   Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const {
-    if constexpr (D == 2) {
-      return Sign::Zero;
-    } else {
-      std::array<std::array<double, D - 1>, D> p;
-      predicates::Coords<D> c;
-      for (int i = 0; i < D; ++i) {
-        p[i] = project(i + 1 < D ? ids[i] : last, axis);
-        c[i] = p[i].data();
-      }
-      return predicates::orient<D - 1>(c);
-    }
+    predicates::Coords<D> c;
+    for (int i = 0; i < D; ++i) c[i] = point_(i + 1 < D ? ids[i] : last);
+    return predicates::orient_projected<D>(c, axis);
   }
 
   [[noreturn]] void refuse(const Sheet<D>& sheet, const std::string& why) const {
@@ -174,11 +166,7 @@ class SheetBuilder {
   // a, v, b on one line (exactly) with v strictly between a and b.
   bool strictly_between(uint32_t a, uint32_t v, uint32_t b) const {
     const double *pa = point_(a), *pv = point_(v), *pb = point_(b);
-    for (int i = 0; i < D; ++i)
-      for (int j = i + 1; j < D; ++j) {
-        const double x[3][2] = {{pa[i], pa[j]}, {pv[i], pv[j]}, {pb[i], pb[j]}};
-        if (predicates::orient<2>({x[0], x[1], x[2]}) != Sign::Zero) return false;
-      }
+    if (!predicates::collinear<D>(pa, pv, pb)) return false;
     for (int i = 0; i < D; ++i)
       if (pa[i] != pb[i]) return (pa[i] < pv[i] && pv[i] < pb[i]) || (pb[i] < pv[i] && pv[i] < pa[i]);
     return false;
@@ -215,12 +203,7 @@ class SheetBuilder {
             if (std::count(through_v_[c].begin(), through_v_[c].end(), r[0]))
               for (uint32_t x : through_v_[c])
                 if (x != v_ && x != r[0] && x != r[1]) inside = x;
-        predicates::Coords<D> c;
-        std::array<std::array<double, D - 1>, D> p;
-        for (int i = 0; i < D - 1; ++i) p[i] = project(r[i], axis);
-        p[D - 1] = project(inside, axis);
-        for (int i = 0; i < D; ++i) c[i] = p[i].data();
-        const Sign o = predicates::orient<D - 1>(c);
+        const Sign o = projected_orient(r, inside, axis);  // r's first D - 1 vertices, then `inside`
         for (uint32_t x : r) polytope.simplices.push_back(local[x]);
         polytope.exterior.push_back(o == Sign::Positive ? ExteriorSide::Negative : ExteriorSide::Positive);
       }

@@ -179,11 +179,7 @@ class Delaunay3 {
     return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
   }
 
-  bool collinear(uint32_t a, uint32_t b, uint32_t c) const {
-    for (int drop = 0; drop < 3; ++drop)
-      if (predicates::orient_projected<3>({coords(a), coords(b), coords(c)}, drop) != Sign::Zero) return false;
-    return true;
-  }
+  bool collinear(uint32_t a, uint32_t b, uint32_t c) const { return predicates::collinear<3>(coords(a), coords(b), coords(c)); }
 
   // ------------------------------------------------------------------------------------------
   // The first tetrahedron: the first four affinely independent points of the order, and its four

@@ -38,4 +38,9 @@ Sign orient(const Vertices<D + 1>& p) {
 template <int D>
 Sign orient_projected(const Coords<D>& p, int drop);
 
+// Do a, b, c lie on one line (exactly)? Every 2x2 minor of (b - a, c - a) vanishes: the orientations
+// of their projections onto the coordinate planes. D = 2..5.
+template <int D>
+bool collinear(const double* a, const double* b, const double* c);
+
 }  // namespace sweepcdt::predicates
