@@ -30,9 +30,9 @@ void remove_mesh_files(const MeshTarget& target) {
 // The tolerance the hint below suggests: far above rounding noise, far below modelling detail.
 constexpr double kSuggestedSnap = 1e-12;
 
-// Why an input without a CDT may only look that way: faces flat by design but stored with rounding
-// noise (sweepcdt/io/snap.h). Empty unless --snap would make some faces exactly flat (or when the
-// input cannot be re-read).
+// Why an input without a CDT may only look that way, or why it needed many Steiner points: faces
+// flat by design but stored with rounding noise (sweepcdt/io/snap.h). Empty unless --snap would make
+// some faces exactly flat (or when the input cannot be re-read).
 std::string snap_hint(const std::string& input, FacetMode facets) {
   try {
     io::SnapReport report;
@@ -88,6 +88,9 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
     r.seconds_write = since(t);
     for (const MeshTarget& target : targets)
       if (target.format == io::MeshFormat::Abaqus) warn_if_rounded(target.file, mesh, r);
+    // More Steiner points than input vertices: rounding noise on flat faces is the usual cause.
+    if (options.snap == 0 && r.cdt.steiner_points > r.input_points)
+      if (std::string hint = snap_hint(input, options.facets); !hint.empty()) r.details.push_back(hint + " (and needs fewer Steiner points)");
   } catch (...) {
     fail(r, describe_current_exception(input, writing));
     if (r.code == kNoCdt && options.snap == 0)

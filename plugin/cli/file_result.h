@@ -21,7 +21,7 @@ struct FileResult {
   std::vector<OutputFile> outputs;  // as requested: all written (code kOk) or none
   int code = kOk;             // exit code of this file
   std::string message;        // the failure's one line (empty on success)
-  std::vector<std::string> details;
+  std::vector<std::string> details;   // failure: the first problems; success: hints
   std::vector<std::string> warnings;  // the file converted, but the user should know (one line each)
 
   int dimension = 3;

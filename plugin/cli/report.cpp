@@ -9,6 +9,8 @@ void report_file(Console& console, const std::string& done_line, const FileResul
   if (r.code == kOk) {
     if (!quiet) console.line(done_line);
     for (const auto& w : r.warnings) console.line("sweepcdt: warning: " + w);
+    if (!quiet)
+      for (const auto& d : r.details) console.line("  " + d);  // hints
     return;
   }
   console.line("sweepcdt: " + r.message);

@@ -9,8 +9,8 @@
 
 namespace sweepcdt::cli {
 
-// Success: `done_line` (unless quiet) and the warnings; failure: the message and (unless quiet) its
-// details.
+// Success: `done_line` and hints (unless quiet) and the warnings; failure: the message and (unless
+// quiet) its details.
 void report_file(Console& console, const std::string& done_line, const FileResult& r, bool quiet);
 
 // --stats, when asked for: writes it, or reports why it could not; returns the run's exit code made

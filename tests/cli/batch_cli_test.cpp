@@ -33,15 +33,16 @@ TEST(CliBatch, FailuresLeaveNothingAndTheWorstCodeIsReturned) {
   const auto out = dir.path() / "out";
   const std::string good = quoted(shared_data() / "off/icosahedron.off");
   const std::string open = quoted(shared_data() / "bad/open_cube.off");
-  const std::string no_cdt = quoted(shared_data() / "stl_ascii/gearwheel_ascii.stl");
-  const CliRun r = run("mesh " + good + " " + open + " " + no_cdt + " --out-dir " + quoted(out) + " --threads 2", dir);
+  const std::string no_cdt = quoted(write_schonhardt(dir));  // with --steiner none
+  const CliRun r = run("mesh " + good + " " + open + " " + no_cdt + " --steiner none --out-dir " + quoted(out) + " --threads 2", dir);
   EXPECT_EQ(r.exit_code, 3) << "bad input (3) outranks no CDT (4)\n" << r.out;
   EXPECT_EQ(files_in(out), std::set<std::string>{"icosahedron.mesh"}) << r.out;
   EXPECT_TRUE(r.says("1 of 3 files converted")) << r.out;
   EXPECT_TRUE(r.says("open_cube.off: not a closed surface")) << r.out;
-  EXPECT_TRUE(r.says("gearwheel_ascii.stl: Steiner points:")) << r.out;
+  EXPECT_TRUE(r.says("schonhardt.off: ")) << r.out;
+  EXPECT_TRUE(r.says("witness vertices")) << r.out;
 
-  const CliRun no_cdt_only = run("mesh " + good + " " + no_cdt + " --out-dir " + quoted(dir.path() / "out2") + " --quiet", dir);
+  const CliRun no_cdt_only = run("mesh " + good + " " + no_cdt + " --steiner none --out-dir " + quoted(dir.path() / "out2") + " --quiet", dir);
   EXPECT_EQ(no_cdt_only.exit_code, 4) << no_cdt_only.out;
   EXPECT_EQ(files_in(dir.path() / "out2"), std::set<std::string>{"icosahedron.mesh"});
   EXPECT_FALSE(no_cdt_only.says("icosahedron")) << "--quiet prints errors only\n" << no_cdt_only.out;

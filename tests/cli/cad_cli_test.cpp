@@ -1,6 +1,6 @@
 // The CAD parts of tests/data/cad (FreeCAD exports: steiner_vs_tetgen_test.cpp says what they are)
 // through the default command, as a FreeCAD user runs it, and `sweepcdt check` on every result: the
-// default meshes them all but the one known failure, and each mesh is exactly the CDT of its part.
+// default meshes them all, and each mesh is exactly the CDT of its part.
 #include <algorithm>
 
 #include "cli_run.h"
@@ -20,19 +20,13 @@ TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
   for (const fs::path& file : files) {
     const fs::path output = dir.path() / (file.stem().string() + file.extension().string().substr(1) + ".mesh");
     const CliRun r = run(quoted(file) + " -o " + quoted(output), dir);
-    if (file.filename() == "pipe_tee_fine.stl") {  // the known failure (steiner_vs_tetgen_test.cpp)
-      EXPECT_EQ(r.exit_code, 4) << r.out;
-      EXPECT_TRUE(r.says("over the limit for this input")) << r.out;
-      EXPECT_FALSE(fs::exists(output));
-      continue;
-    }
     ASSERT_EQ(r.exit_code, 0) << file << "\n" << r.out;
     const CliRun ok = run("check " + quoted(file) + " " + quoted(output), dir);
     EXPECT_EQ(ok.exit_code, 0) << file << "\n" << ok.out;
     EXPECT_TRUE(ok.says("coplanar facets, tiling them;")) << ok.out;
     ++meshed;
   }
-  EXPECT_EQ(meshed, static_cast<int>(files.size()) - 1);
+  EXPECT_EQ(meshed, static_cast<int>(files.size()));
 }
 
 }  // namespace

@@ -61,13 +61,13 @@ inline std::string bytes_of(const fs::path& file) {
 
 inline fs::path shared_data() { return fs::path(SWEEPCDT_SHARED_DATA); }
 
-// The valid closed shared meshes that get a CDT with Steiner points, and those that do not (the
-// committed known failures of tests/integration/shared_meshes_cdt_test.cpp; issue 7).
+// The valid closed shared meshes, which all get a CDT with Steiner points, but gearwheel: it takes
+// 20 s and 49k Steiner points (its faces are flat only to within rounding), so it has tests of its
+// own (snap_cli_test.cpp).
 inline const char* const kMeshesWithCdt[] = {"off/icosahedron.off", "off/femur.off", "stl_ascii/t13_data_ascii.stl",
                                              "stl_binary/spot.stl", "stl_binary/torus.stl", "gltf/Box.gltf",
                                              "gltf/two_objects_inverse_materials.gltf", "glb/moon.glb", "glb/cubevc.glb",
                                              "drc/cube_att.drc", "drc/knot1.drc", "stl_binary/thingi_1706459.stl"};
-inline const char* const kMeshesWithoutCdt[] = {"stl_ascii/gearwheel_ascii.stl"};
 
 // Schönhardt's twisted prism (no tetrahedralization without Steiner points) as an OFF file in dir.
 inline fs::path write_schonhardt(const TempDir& dir, const std::string& name = "schonhardt.off") {

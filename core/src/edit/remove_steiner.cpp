@@ -7,14 +7,24 @@
 
 namespace sweepcdt::detail {
 
-uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const Options& options) {
+uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
+                               const Options& options) {
   const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
   EditableCdt<3> mesh(std::move(plc), std::move(tri));
-  // A work list, last added first: a point that stays is tried again only when a neighbour goes
-  // (only then can the answer change: the rest of the CDT and of the PLC is the same).
+  // Per Steiner point: how many points made from it are still there; it is tried only at 0.
+  std::vector<uint32_t> children(end - first, 0);
+  for (const auto& pair : made_from)
+    for (uint32_t parent : pair)
+      if (parent >= first) ++children[parent - first];
+  // A work list, last added first (children before their parents): a point that stays is tried
+  // again only when a neighbour goes (only then can the answer change: the rest of the CDT and of
+  // the PLC is the same), or when its last child goes.
   std::deque<uint32_t> work;
-  std::vector<char> queued(end - first, 1);
-  for (uint32_t v = end; v-- > first;) work.push_back(v);
+  std::vector<char> queued(end - first, 0);
+  const auto enqueue = [&](uint32_t w) {
+    if (w >= first && !queued[w - first] && children[w - first] == 0) queued[w - first] = 1, work.push_back(w);
+  };
+  for (uint32_t v = end; v-- > first;) enqueue(v);
   uint64_t removed = 0, tried = 0;
   while (!work.empty()) {
     const uint32_t v = work.front();
@@ -24,8 +34,10 @@ uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const Options
     try {
       mesh.remove_vertex(v);
       ++removed;
-      for (uint32_t w : neighbours)
-        if (w >= first && !queued[w - first]) queued[w - first] = 1, work.push_back(w);
+      for (uint32_t parent : made_from[v - first])
+        if (parent >= first) --children[parent - first];
+      for (uint32_t w : neighbours) enqueue(w);
+      for (uint32_t parent : made_from[v - first]) enqueue(parent);
     } catch (const NoCdtError&) {
       // needed: the PLC without it has no CDT
     } catch (const VertexRemovalError&) {

@@ -3,15 +3,20 @@
 // deleted again (paper §5, EditableCdt) when the PLC left still has a CDT — the deletion checks
 // that exactly and is undone otherwise — last added first, in passes until one deletes nothing.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
 
 // `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner
-// points); both are replaced by the result. Returns the number of points deleted. Throws
-// CancelledError when `options.progress` says so.
-uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const Options& options);
+// points); both are replaced by the result. `made_from`: per Steiner point, the two points it was
+// made from (refine.h); `sweepcdt check` recognises a Steiner point as a rounded split of those
+// two, so a point stays while a point made from it stays. Returns the number of points deleted.
+// Throws CancelledError when `options.progress` says so.
+uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
+                               const Options& options);
 
 }  // namespace sweepcdt::detail

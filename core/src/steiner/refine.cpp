@@ -10,6 +10,7 @@
 #include "delaunay3.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
+#include "spacing_grid.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/steiner_point.h"
 
@@ -17,6 +18,7 @@ namespace sweepcdt::detail {
 namespace {
 
 using Triangle = std::array<uint32_t, 3>;
+using predicates::Sign;
 
 // Limits that keep a hostile input from running away (the concentric-shell rule terminates, but the
 // number of points it needs grows with the ratio of the longest segment to the smallest gap).
@@ -61,24 +63,30 @@ class Refiner {
     for (;; ++r_.rounds) {
       delaunay.insert_new_points();  // the Steiner points of the last round
       auto split = segments_not_in(delaunay);
+      std::size_t inside = 0;  // points put inside facets this round
       if (split.empty()) {
-        // The segments are Delaunay: give each facet its 2D CDT, then make the folds that rounding
-        // left in it segments when they are not Delaunay either (see fold_edges_not_in).
+        // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
+        // rounding left in it when they are not Delaunay either (see folds_not_in).
         flip_facets();
         r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
                                            [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
-        split = fold_edges_not_in(delaunay);
+        const std::vector<uint64_t> folds = folds_not_in(delaunay);
+        if (!folds.empty()) {
+          inside = split_folds_inside_facets(folds, split);
+          if (inside == 0 && split.empty()) split = make_segments(folds);
+        }
       }
       if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
-      if (split.empty()) return;
+      if (split.empty() && inside == 0) return;
       if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
-        throw NoCdtError("Steiner points: " + std::to_string(split.size()) + " segments still not Delaunay after " +
+        throw NoCdtError("Steiner points: " + std::to_string(split.size() + inside) + " segments or folds still not Delaunay after " +
                              std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +
                              " Steiner points, over the limit for this input (100 per input point + 100000); long thin "
                              "triangles on faces that are flat only approximately need that many" +
                              (options_.facets == FacetMode::Coplanar ? std::string()
                                                                      : " (faces that are exactly flat can be merged: --facets coplanar)"),
-                         {static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
+                         split.empty() ? std::vector<uint32_t>{} : std::vector<uint32_t>{static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
+      if (split.empty()) continue;
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
       split_triangles(new_point);
@@ -104,9 +112,9 @@ class Refiner {
   // A rounded Steiner point lies a few ulps off its segment, so the triangles of one facet that meet
   // at an edge from it are not exactly coplanar: the edge is a fold, a ridge of the refined PLC like
   // any segment. The CDT theorem needs it strongly Delaunay too; a fold that is not would leave the
-  // refined PLC without a CDT (thingi_1706459.stl: 20 of 11787 folds). Such folds become segments —
-  // no longer flipped, split like any other — and are returned, each once, in triangle order.
-  std::vector<uint64_t> fold_edges_not_in(DelaunayEdges& delaunay) {
+  // refined PLC without a CDT (thingi_1706459.stl: 20 of 11787 folds). Returns those folds, each
+  // once, in triangle order.
+  std::vector<uint64_t> folds_not_in(DelaunayEdges& delaunay) const {
     const EdgeSides sides = interior_edge_sides(tris_, groups_.segments);  // facet-interior edge -> its two triangles
     std::vector<uint64_t> folds;
     for (uint32_t j = 0; j < tris_.size(); ++j)
@@ -115,12 +123,94 @@ class Refiner {
         const auto it = sides.find(key);
         if (it == sides.end() || it->second[0] != j || it->second[1] == kNone || delaunay.has_edge(tris_[j][i], tris_[j][(i + 1) % 3])) continue;
         const uint32_t apex = third_vertex(tris_[it->second[1]], key);
-        if (predicates::orient<3>({p(tris_[j][0]), p(tris_[j][1]), p(tris_[j][2]), p(apex)}) == predicates::Sign::Zero) continue;
+        if (predicates::orient<3>({p(tris_[j][0]), p(tris_[j][1]), p(tris_[j][2]), p(apex)}) == Sign::Zero) continue;
         folds.push_back(key);
-        groups_.segments.insert(key);
-        fold_segments_.insert(key);
       }
     return folds;
+  }
+
+  // Folds that are not Delaunay get a point inside their facet, at their midpoint, and the facet's
+  // CDT (next round's flips) connects it to whatever it sees. A fold is typically one of a fan of
+  // long thin triangles (an input vertex facing a finely split segment across a large facet), so
+  // one point takes over many folds at once; splitting each fold would refine the whole facet
+  // uniformly, quadratically many points. So the longest folds go first, and a midpoint closer
+  // to a point placed this round than half its fold's length waits for the next round (graded, as
+  // Delaunay refinement grades). Returns the number of points placed.
+  std::size_t split_folds_inside_facets(const std::vector<uint64_t>& folds, std::vector<uint64_t>& encroached) {
+    const EdgeSides sides = interior_edge_sides(tris_, groups_.segments);
+    std::vector<std::pair<double, uint64_t>> by_length;
+    for (uint64_t key : folds) by_length.emplace_back(-squared_length(key), key);
+    std::sort(by_length.begin(), by_length.end());
+    std::vector<char> touched(tris_.size(), 0);
+    SpacingGrid grid;
+    std::size_t count = 0;
+    for (const auto& [minus_length2, key] : by_length) {
+      const auto& [t1, t2] = sides.at(key);
+      if (touched[t1] || touched[t2]) continue;
+      const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+      double x[3];
+      point_on_segment(p(a), p(b), 0.5, x);
+      const double radius = 0.5 * std::sqrt(-minus_length2);
+      if (coordinates_.count(key_of(x)) || grid.any_within(x, radius)) continue;
+      // A midpoint inside a segment's diametral ball would make that segment not Delaunay, and
+      // split it next round right beside the new point: split the segment instead (Ruppert).
+      bool encroaches = false;
+      for (const uint32_t t : {t1, t2})
+        for (int i = 0; i < 3; ++i) {
+          const uint64_t side = edge_key(tris_[t][i], tris_[t][(i + 1) % 3]);
+          if (!groups_.segments.count(side) || !in_diametral_ball(side, x)) continue;
+          encroaches = true;
+          if (std::find(encroached.begin(), encroached.end(), side) == encroached.end()) encroached.push_back(side);
+        }
+      if (encroaches) {
+        touched[t1] = touched[t2] = 1;
+        continue;
+      }
+      grid.add(x);
+      coordinates_.insert(key_of(x));
+      const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
+      points_.insert(points_.end(), x, x + 3);
+      on_segment_.push_back({kNone, kNone});
+      r_.steiner_on.push_back(original_[t1]);
+      r_.made_from.push_back({a, b});
+      for (const uint32_t t : {t1, t2}) {
+        touched[t] = 1;
+        Triangle& tri = tris_[t];
+        int i = 0;
+        while (edge_key(tri[i], tri[(i + 1) % 3]) != key) ++i;
+        Triangle second = tri;
+        tri[(i + 1) % 3] = m;  // (a, m, c)
+        second[i] = m;         // (m, b, c)
+        tris_.push_back(second);
+        original_.push_back(original_[t]);
+      }
+      ++count;
+    }
+    return count;
+  }
+
+  // The folds become segments (no longer flipped, split like any other segment, their split points
+  // inside the facet): the way out when no fold got a point inside its facet.
+  std::vector<uint64_t> make_segments(const std::vector<uint64_t>& folds) {
+    for (uint64_t key : folds) {
+      groups_.segments.insert(key);
+      fold_segments_.insert(key);
+    }
+    return folds;
+  }
+
+  bool in_diametral_ball(uint64_t key, const double* x) const {
+    const double* a = p(static_cast<uint32_t>(key >> 32));
+    const double* b = p(static_cast<uint32_t>(key));
+    double inner = 0;  // (a - x) . (b - x) < 0: x sees ab at an obtuse angle
+    for (int k = 0; k < 3; ++k) inner += (a[k] - x[k]) * (b[k] - x[k]);
+    return inner < 0;
+  }
+
+  double squared_length(uint64_t key) const {
+    const double* a = p(static_cast<uint32_t>(key >> 32));
+    const double* b = p(static_cast<uint32_t>(key));
+    return (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]);
   }
 
   struct CoordinatesHash {
@@ -155,6 +245,7 @@ class Refiner {
     else
       on_segment_.push_back(!is_input(a) ? on_segment_[a] : !is_input(b) ? on_segment_[b] : std::array<uint32_t, 2>{a, b});
     r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
+    r_.made_from.push_back({a, b});
     groups_.segments.erase(key);
     groups_.segments.insert(edge_key(a, m));
     groups_.segments.insert(edge_key(m, b));

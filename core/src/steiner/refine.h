@@ -20,12 +20,20 @@
 // only to within a few units of rounding, and the triangles of a facet that meet at an edge from it
 // are then not exactly coplanar. Such an edge is a ridge of the refined PLC like a segment; when it
 // is not Delaunay it is flipped to the other diagonal of its quadrilateral if that one is Delaunay
-// (facet_flips.h), else it becomes a segment and the rounds go on (its split points lie inside the
-// facet). The shell parameter is rounded to 20 bits (sweepcdt/steiner_point.h), so on surfaces with
+// (facet_flips.h), else its midpoint becomes a point inside the facet and the rounds go on; the
+// facet's next 2D CDT connects it to what it sees. Non-Delaunay folds are mostly fans of long thin
+// triangles across a large facet (an input vertex facing a finely split segment, on CAD parts whose
+// coordinates carry rounding noise), so such points are placed longest fold first and kept half
+// their fold's length apart within a round, and a point that would encroach on a segment (lie in
+// its diametral ball) splits that segment instead — Ruppert's graded refinement, restricted to the
+// facets' folds. (Making such folds segments, as before, refined facets uniformly: pipe_tee_fine.stl
+// and gearwheel_ascii.stl ran past the point budget.) When no fold gets a point, the folds become
+// segments as a last resort. The shell parameter is rounded to 20 bits (sweepcdt/steiner_point.h), so on surfaces with
 // float coordinates most points lie exactly on their segments and make no folds at all.
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +47,8 @@ struct RefinedPlc {
   std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding it
   std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
                                       // coplanar facets: the facet's first input triangle)
+  std::vector<std::array<uint32_t, 2>> made_from;  // per Steiner point: the two points it splits
+                                                   // (`sweepcdt check` recognises it by them)
   uint64_t rounds = 0, facets = 0, flips = 0;
 };
 
