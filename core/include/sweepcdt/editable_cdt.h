@@ -58,8 +58,10 @@ class EditableCdt {
   ~EditableCdt();
 
   // Deletes vertex v from the CDT and from the PLC. Throws NoCdtError (unchanged) when the PLC
-  // without v has no CDT, VertexRemovalError (unchanged) when v cannot be deleted (above).
-  void remove_vertex(uint32_t v);
+  // without v has no CDT, VertexRemovalError (unchanged) when v cannot be deleted (above). Returns
+  // what neighbours(v) returned before: a caller that reacts to a deletion's neighbours need not
+  // walk every star twice (most attempts are refused).
+  std::vector<uint32_t> remove_vertex(uint32_t v);
 
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)

@@ -16,6 +16,7 @@
 #include "../ids_text.h"
 #include "../sweep/sweep_cdt.h"
 #include "sheets.h"
+#include "sorted_keys.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -162,8 +163,7 @@ struct EditableCdt<D>::Impl {
     ExteriorSide plc_side;  // its notation in the PLC
     uint32_t tag;
   };
-
-  void remove_vertex(uint32_t v) {
+  std::vector<uint32_t> remove_vertex(uint32_t v) {
     require_vertex(v);
     if (live_vertices <= D + 1) throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the triangulation would be empty");
     const std::vector<uint32_t> star = star_of(v);
@@ -250,6 +250,8 @@ struct EditableCdt<D>::Impl {
       require_link_vertices_kept(v, ids, fill, link);
     }
     commit(v, star, through, fill, link, added);
+    std::sort(ids.begin(), ids.end());  // v's former neighbours, ascending as neighbours() lists them
+    return ids;
   }
 
   // --- a vertex on the convex hull ------------------------------------------------------------------
@@ -468,19 +470,17 @@ struct EditableCdt<D>::Impl {
   // locally Delaunay (under the same perturbation): with the cavity's own CDT validated and the
   // rest unchanged, every facet of the whole is then locally constrained Delaunay — a CDT.
   void check_link_delaunay(uint32_t v, const Triangulation<D>& fill, const std::vector<LinkFace>& link) const {
-    std::unordered_map<Key, uint32_t, TupleHash> inner_of;  // link face -> the new simplex on it
+    detail::SortedKeys<Key> inner_of;  // link face -> the new simplex on it
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i)
-        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) {
-          const Key f = facet_of(fill, t, i);
-          inner_of.emplace(sorted(f), t);
-        }
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone) inner_of.add(sorted(facet_of(fill, t, i)), t);
+    inner_of.sort();
     for (const LinkFace& face : link) {
       if (face.across == kNone || constraint_of.count(face.key)) continue;
       const uint32_t apex = simplex(face.across / (D + 1))[face.across % (D + 1)];
-      const auto found = inner_of.find(face.key);
-      if (found == inner_of.end()) continue;  // no new simplex there: a hull face now (v was on the hull)
-      const uint32_t t = found->second;
+      const uint32_t* found = inner_of.find(face.key);
+      if (!found) continue;  // no new simplex there: a hull face now (v was on the hull)
+      const uint32_t t = *found;
       predicates::Vertices<D + 1> s;
       for (int i = 0; i <= D; ++i) s[i] = vertex(fill.simplex(t)[i]);
       if (predicates::inside_circumsphere<D>(s, vertex(apex))) {
@@ -525,8 +525,9 @@ struct EditableCdt<D>::Impl {
 
     std::vector<uint32_t> slot(fill.num_simplices());
     for (auto& s : slot) s = new_slot();
-    std::unordered_map<Key, const LinkFace*, TupleHash> link_of;
-    for (const LinkFace& f : link) link_of.emplace(f.key, &f);
+    detail::SortedKeys<Key> link_of;  // link face key -> its index in `link`
+    for (uint32_t j = 0; j < link.size(); ++j) link_of.add(link[j].key, j);
+    link_of.sort();
     for (uint32_t t = 0; t < fill.num_simplices(); ++t) {
       const uint32_t g = slot[t];
       std::copy_n(fill.simplex(t), D + 1, simplex(g));
@@ -538,27 +539,28 @@ struct EditableCdt<D>::Impl {
           across = slot[inner / (D + 1)] * (D + 1) + inner % (D + 1);
           continue;
         }
-        const auto f = link_of.find(sorted(facet(g, i)));
+        const uint32_t* f = link_of.find(sorted(facet(g, i)));
         across = kNone;  // not on the link: a sheet's new simplex on the domain's boundary
-        if (f == link_of.end()) continue;
-        across = f->second->across;
+        if (!f) continue;
+        across = link[*f].across;
         if (across != kNone) neighbors[across] = g * (D + 1) + i;
-        if (!regions.empty()) regions[g] = f->second->region;
+        if (!regions.empty()) regions[g] = link[*f].region;
       }
     }
     // Link faces no new simplex reached (v was on the hull): their outside simplex is on the hull now.
-    std::unordered_map<Key, bool, TupleHash> covered;
+    detail::SortedKeys<Key> covered;
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
-      for (int i = 0; i <= D; ++i) covered[sorted(facet(slot[t], i))] = true;
-    std::unordered_map<uint32_t, bool> in_fill;
-    for (uint32_t x : fill.simplices) in_fill[x] = true;
+      for (int i = 0; i <= D; ++i) covered.add(sorted(facet(slot[t], i)), 0);
+    covered.sort();
+    std::vector<uint32_t> in_fill = fill.simplices;
+    std::sort(in_fill.begin(), in_fill.end());
     for (const LinkFace& f : link) {
       if (f.across == kNone) continue;
-      if (!covered.count(f.key)) neighbors[f.across] = kNone;
+      if (!covered.contains(f.key)) neighbors[f.across] = kNone;
       // A vertex only outside the new simplices walks from the simplex outside (its old one may
       // have been a star slot, freed or reused).
       for (uint32_t w : f.key)
-        if (!in_fill.count(w)) simplex_at[w] = f.across / (D + 1);
+        if (!std::binary_search(in_fill.begin(), in_fill.end(), w)) simplex_at[w] = f.across / (D + 1);
     }
     if (!regions.empty()) spread_regions(fill, slot, link_of);
   }
@@ -566,12 +568,12 @@ struct EditableCdt<D>::Impl {
   // Regions: a new simplex on the link takes the region of the star simplex it replaced there; the
   // others take their neighbours' across facets that are no constraints.
   void spread_regions(const Triangulation<D>& fill, const std::vector<uint32_t>& slot,
-                      const std::unordered_map<Key, const LinkFace*, TupleHash>& link_of) {
+                      const detail::SortedKeys<Key>& link_of) {
     std::vector<char> known(fill.num_simplices(), 0);
     std::vector<uint32_t> queue;
     for (uint32_t t = 0; t < fill.num_simplices(); ++t)
       for (int i = 0; i <= D; ++i)
-        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && link_of.count(sorted(facet(slot[t], i))) && !known[t])
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && link_of.contains(sorted(facet(slot[t], i))) && !known[t])
           known[t] = 1, queue.push_back(t);
     for (std::size_t k = 0; k < queue.size(); ++k) {
       const uint32_t t = queue[k];
@@ -671,8 +673,8 @@ template <int D>
 EditableCdt<D>::~EditableCdt() = default;
 
 template <int D>
-void EditableCdt<D>::remove_vertex(uint32_t v) {
-  impl_->remove_vertex(v);
+std::vector<uint32_t> EditableCdt<D>::remove_vertex(uint32_t v) {
+  return impl_->remove_vertex(v);
 }
 template <int D>
 bool EditableCdt<D>::has_vertex(uint32_t v) const {

@@ -30,9 +30,8 @@ uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::ve
     const uint32_t v = work.front();
     work.pop_front();
     queued[v - first] = 0;
-    const std::vector<uint32_t> neighbours = mesh.neighbours(v);
     try {
-      mesh.remove_vertex(v);
+      const std::vector<uint32_t> neighbours = mesh.remove_vertex(v);
       ++removed;
       for (uint32_t parent : made_from[v - first])
         if (parent >= first) --children[parent - first];
