@@ -9,15 +9,14 @@
 
 namespace sweepcdt::detail {
 
-// add() every key, sort() once, then find(). A key added twice maps to its first value (as
-// unordered_map::emplace keeps the first).
+// add() every key, with values in ascending order, sort() once, then find(). A key added twice
+// maps to its first value (as unordered_map::emplace keeps the first): sorting the (key, value)
+// pairs puts it first, without stable_sort's buffer.
 template <class K>
 class SortedKeys {
  public:
   void add(const K& key, uint32_t value) { entries_.push_back({key, value}); }
-  void sort() {
-    std::stable_sort(entries_.begin(), entries_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  }
+  void sort() { std::sort(entries_.begin(), entries_.end()); }
   const uint32_t* find(const K& key) const {
     const auto it = std::lower_bound(entries_.begin(), entries_.end(), key, [](const auto& e, const K& k) { return e.first < k; });
     return it != entries_.end() && it->first == key ? &it->second : nullptr;
