@@ -10,9 +10,11 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj and the closed shared meshes)
+  --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
+           tests/integration/steiner_vs_tetgen_test.cpp and more; steiner_bench --cad-noise makes them)
 
 With --before, only the default command is timed, of both builds in turn (before, after, before,
 after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
@@ -36,6 +38,11 @@ SHARED_CLOSED = ["off/femur.off", "off/icosahedron.off", "stl_ascii/t13_data_asc
                  "stl_binary/torus.stl", "stl_ascii/gearwheel_ascii.stl", "stl_binary/thingi_1706459.stl",
                  "drc/knot1.drc", "glb/moon.glb", "drc/cube_att.drc"]
 TIMEOUT = 600
+# (part of tests/data/cad, fraction of coordinates moved by a few ulps): CAD exports' rounding noise.
+NOISY = [("bracket_fine.stl", 0.5), ("flange_fine.stl", 0.1), ("flange_fine.stl", 0.5), ("two_bodies_fine.stl", 0.5),
+         ("pipe_tee_std.stl", 0.1), ("plate_with_holes_std.stl", 0.5), ("plate_with_holes_fine.stl", 0.1),
+         ("box_fused_sphere_fine.stl", 0.5), ("filleted_box_fine.stl", 1.0), ("gear_fine.stl", 0.5),
+         ("hex_nut_fine.stl", 0.5), ("rotated_box_fine.stl", 0.5)]
 
 
 def timed(cmd, cwd):
@@ -130,6 +137,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--before", help="a second build: time the default command of both, paired")
     ap.add_argument("--repeat", type=int)
+    ap.add_argument("--noise", action="store_true", help="CAD parts with rounding noise (NOISY)")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -138,6 +146,15 @@ def main():
     files = args.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.stl")) +
                                  glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.obj"))) + \
         [os.path.join(SHARED, f) for f in SHARED_CLOSED if os.path.exists(os.path.join(SHARED, f))]
+    noisy_dir = tempfile.TemporaryDirectory()
+    if args.noise:
+        files = []
+        for name, fraction in NOISY:
+            stem = f"{os.path.splitext(name)[0]}_noise{fraction}"
+            path = os.path.join(noisy_dir.name, stem + ".off")
+            subprocess.run([converter, os.path.join(ROOT, "tests", "data", "cad", name), "--cad-noise", str(fraction),
+                            "--off", path, "--count-only"], check=True, capture_output=True)
+            files.append(path)
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return

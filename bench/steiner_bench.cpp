@@ -3,6 +3,8 @@
 //
 //   steiner_bench FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]
 //                      [--count-only]    (only the welded counts, and the OFF file: bench/run_cad.py)
+//                      [--cad-noise F]   (first move coordinates by a few ulps with probability F:
+//                                         tests/support/cad_noise.h, seed 1, as the tests do)
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/write_surface.h"
+#include "cad_noise.h"
 
 using namespace sweepcdt;
 
@@ -23,6 +26,7 @@ int main(int argc, char** argv) {
   options.steiner = SteinerMode::Auto;
   std::string off;
   bool count_only = false;
+  double noise = 0;
   for (int i = 2; i < argc; i += 2) {
     if (std::string(argv[i]) == "--count-only") {
       count_only = true;
@@ -36,8 +40,10 @@ int main(int argc, char** argv) {
     else if (flag == "--algorithm")
       options.algorithm = value == "giftwrap" ? Algorithm::GiftWrap : value == "sweep-plane" ? Algorithm::SweepPlane : Algorithm::SweepSphere;
     else if (flag == "--off") off = value;
+    else if (flag == "--cad-noise") noise = std::stod(value);
   }
-  const Plc<3> plc = io::import_plc(argv[1]);
+  Plc<3> plc = io::import_plc(argv[1]);
+  if (noise > 0) plc = testing::with_cad_noise(std::move(plc), noise, 1);
   if (!off.empty()) io::write_surface(off, plc, io::Format::Off);
   if (count_only) {
     std::printf("{\"file\": \"%s\", \"points\": %zu, \"triangles\": %zu}\n", argv[1], plc.num_points(), plc.num_simplices());
