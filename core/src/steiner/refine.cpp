@@ -143,7 +143,7 @@ class Refiner {
     std::sort(by_length.begin(), by_length.end());
     std::vector<char> touched(tris_.size(), 0);
     SpacingGrid grid;
-    std::size_t count = 0;
+    std::unordered_map<uint64_t, uint32_t> new_point;  // fold -> its point
     for (const auto& [minus_length2, key] : by_length) {
       const auto& [t1, t2] = sides.at(key);
       if (touched[t1] || touched[t2]) continue;
@@ -171,22 +171,13 @@ class Refiner {
       const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
       points_.insert(points_.end(), x, x + 3);
       on_segment_.push_back({kNone, kNone});
-      r_.steiner_on.push_back(original_[t1]);
+      r_.steiner_on.push_back(kNone);  // set by split_triangles, as for a segment's point
       r_.made_from.push_back({a, b});
-      for (const uint32_t t : {t1, t2}) {
-        touched[t] = 1;
-        Triangle& tri = tris_[t];
-        int i = 0;
-        while (edge_key(tri[i], tri[(i + 1) % 3]) != key) ++i;
-        Triangle second = tri;
-        tri[(i + 1) % 3] = m;  // (a, m, c)
-        second[i] = m;         // (m, b, c)
-        tris_.push_back(second);
-        original_.push_back(original_[t]);
-      }
-      ++count;
+      touched[t1] = touched[t2] = 1;
+      new_point.emplace(key, m);
     }
-    return count;
+    split_triangles(new_point);
+    return new_point.size();
   }
 
   // The folds become segments (no longer flipped, split like any other segment, their split points
