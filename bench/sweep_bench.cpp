@@ -50,6 +50,7 @@ Algorithm parse_algorithm(const std::string& s) {
   if (s == "sweep-sphere") return Algorithm::SweepSphere;
   if (s == "sweep-plane") return Algorithm::SweepPlane;
   if (s == "giftwrap") return Algorithm::GiftWrap;
+  if (s == "cavity-sweep") return Algorithm::CavitySweep;
   throw std::invalid_argument("unknown algorithm " + s);
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cavity/cavity_cdt.h"
 #include "gift_wrap.h"
 #include "regions.h"
 #include "relabel.h"
@@ -26,8 +27,23 @@ const char* to_string(Algorithm algorithm) {
     case Algorithm::SweepSphere: return "sweep-sphere";
     case Algorithm::SweepPlane: return "sweep-plane";
     case Algorithm::GiftWrap: return "giftwrap";
+    case Algorithm::CavitySweep: return "cavity-sweep";
   }
   return "unknown";
+}
+
+std::optional<Algorithm> algorithm_named(std::string_view name) {
+  for (const Algorithm a : kAlgorithms)
+    if (name == to_string(a)) return a;
+  if (name == "gift-wrap") return Algorithm::GiftWrap;
+  return std::nullopt;
+}
+
+std::string algorithm_choices() {
+  std::string text;
+  for (std::size_t i = 0; i < std::size(kAlgorithms); ++i)
+    text += std::string(i == 0 ? "" : i + 1 == std::size(kAlgorithms) ? " or " : ", ") + to_string(kAlgorithms[i]);
+  return text;
 }
 
 namespace {
@@ -45,15 +61,19 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// The whole PLC by one of the paper's algorithms.
 template <int D>
 Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
   // The sweep plane needs the domain's left boundary: it has it for facet-bounded domains only.
-  stats.algorithm = options.algorithm == Algorithm::SweepPlane && !plc.facet_bounded() ? Algorithm::SweepSphere : options.algorithm;
+  stats.algorithm = options.algorithm;
+  if ((options.algorithm == Algorithm::SweepPlane && !plc.facet_bounded()) || options.algorithm == Algorithm::CavitySweep)
+    stats.algorithm = Algorithm::SweepSphere;
   switch (stats.algorithm) {
     case Algorithm::GiftWrap:
       return detail::gift_wrap(plc, options);
     case Algorithm::SweepPlane:
       return detail::sweep_cdt<D>(plc, std::nullopt, options, stats);
+    case Algorithm::CavitySweep:  // not reached: stats.algorithm is the sphere then
     case Algorithm::SweepSphere: {
       const auto delta = detail::seed_simplex(plc);
       stats.seconds_setup += clock.lap();
@@ -64,12 +84,13 @@ Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics&
 }
 
 
-// Pairs the neighbours of the simplices `build` made of `plc`, assigns regions, and verifies them.
+// Pairs the neighbours of the simplices `build` made of `plc` (unless it did), assigns regions, and
+// verifies them — validate() checks the neighbours too.
 template <int D>
 Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, CdtStatistics& stats, Stopwatch& clock) {
   stats.seconds_build += clock.lap();
   stats.simplices = tri.num_simplices();
-  compute_neighbors(tri);
+  if (tri.neighbors.empty()) compute_neighbors(tri);
   detail::assign_regions(tri, plc);
   const ValidationReport report = validate(tri, plc);
   stats.seconds_finish += clock.lap();
@@ -80,9 +101,24 @@ Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, CdtStatistics& 
   return tri;
 }
 
-// Triangulates `plc` (already checked) and verifies the result.
+// Triangulates `plc` (already checked) and verifies the result. CavitySweep sweeps the whole PLC with
+// the sphere when its own path cannot decide (cavity/cavity_cdt.h), or when its result fails
+// validation — which happens only when the PLC has no CDT: a cavity can have a CDT while the whole
+// does not; the whole sweep then fails too, with its witness.
 template <int D>
 Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
+  if constexpr (D == 3) {
+    if (options.algorithm == Algorithm::CavitySweep) {
+      stats.algorithm = Algorithm::CavitySweep;
+      if (std::optional<Triangulation<3>> tri = detail::cavity_cdt(plc, options, stats)) {
+        try {
+          return finish(std::move(*tri), plc, stats, clock);
+        } catch (const NoCdtError&) {
+          // swept whole below
+        }
+      }
+    }
+  }
   return finish(build(plc, options, stats, clock), plc, stats, clock);
 }
 

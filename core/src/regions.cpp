@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
-#include <unordered_set>
 #include <vector>
 
-#include "facet_hash.h"
 #include "facets.h"
+#include "tuple_map.h"
 #include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::detail {
@@ -14,12 +13,12 @@ namespace sweepcdt::detail {
 template <int D>
 void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
   const std::size_t s = tri.num_simplices();
-  std::unordered_set<FacetKey<D>, TupleHash> constraints;
+  TupleMap<D> constraints(plc.num_simplices());
   for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
     FacetKey<D> k;
     std::copy_n(plc.simplex(j), D, k.begin());
     std::sort(k.begin(), k.end());
-    constraints.insert(k);
+    constraints.emplace(k, 0);
   }
   // Components across unconstrained facets (breadth-first).
   std::vector<int32_t> component(s, -1);
@@ -35,7 +34,7 @@ void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
       for (int i = 0; i <= D; ++i) {
         const uint32_t nb = tri.neighbors[(D + 1) * t + i];
         if (nb == kNone || component[nb / (D + 1)] >= 0) continue;
-        if (constraints.count(facet_key<D>(tri.simplex(t), i))) continue;
+        if (constraints.find(facet_key<D>(tri.simplex(t), i)) != TupleMap<D>::kAbsent) continue;
         component[nb / (D + 1)] = components;
         queue.push_back(nb / (D + 1));
       }

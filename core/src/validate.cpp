@@ -241,6 +241,16 @@ class Validator {
     return predicates::orient<D>(c);
   }
 
+  Sign exterior_sign(uint32_t j) const { return plc_.exterior_of(j) == ExteriorSide::Positive ? Sign::Positive : Sign::Negative; }
+
+  // The group's facet has exactly the vertices of its constraint (no Steiner point subdivides it).
+  bool is_the_constraint(const Group& g) const {
+    detail::FacetKey<D> key;
+    std::copy_n(plc_.simplex(g.constraint), D, key.begin());
+    std::sort(key.begin(), key.end());
+    return key == facets_[g.begin].key;
+  }
+
   void domain() {
     if (plc_.facet_bounded()) facet_bounded_domain();
     else convex_hull_domain();
@@ -255,10 +265,9 @@ class Validator {
           fail("domain-boundary", facet_text(g) + " bounds the triangulation but is not an exterior-notated constraining simplex");
         continue;
       }
-      const Sign exterior_sign = ext == ExteriorSide::Positive ? Sign::Positive : Sign::Negative;
       bool domain_side = false;
       for (std::size_t k = g.begin; k < g.end; ++k) {
-        if (side_of_constraint(g.constraint, facets_[k]) == exterior_sign)
+        if (side_of_constraint(g.constraint, facets_[k]) == exterior_sign(g.constraint))
           fail("domain-boundary", simplex_text(facets_[k].simplex) + " lies on the exterior side of constraining simplex " + n(g.constraint));
         else
           domain_side = true;
@@ -332,30 +341,43 @@ class Validator {
           }
   }
 
-  // Sum of simplex volumes = volume of the domain, computed from its boundary as a sum of cones from
-  // point 0 (divergence theorem): each boundary piece oriented with the domain on its positive side.
+  // Sum of simplex volumes = volume of the domain, computed from its notated boundary as a sum of
+  // cones from point 0 (divergence theorem): each boundary piece oriented with the domain on its
+  // positive side. Both sides are exact sums, and two exact identities keep them short:
+  //  - a simplex's volume is the sum of the cones from point 0 over its facets (multilinearity), and
+  //    at an interior facet whose two simplices lie on opposite sides the two cones cancel; so where
+  //    the facets pair up like that (interior_facet_sides() and group_facets() report every facet
+  //    that does not), the simplices' volume is the sum of the cones over the boundary facets;
+  //  - a boundary facet that is a notated constraint itself, its simplex on the domain side, has
+  //    exactly that constraint's cone, and the two terms cancel.
+  // What is left to add up is the boundary that Steiner points subdivide (and whatever other checks
+  // found wrong). A convex hull domain's boundary is the boundary facets themselves, so the identity
+  // alone makes its two sums equal: nothing to compare.
   void volume() {
-    if (tri_.num_points() == 0) return;
+    if (tri_.num_points() == 0 || !plc_.facet_bounded()) return;
     predicates::ExactMeasureSum simplices, domain;
-    for (uint32_t t = 0; t < tri_.num_simplices(); ++t) simplices.add_volume<D>(coords(t));
     const double* origin = tri_.point(0);
-    if (plc_.facet_bounded()) {
-      for (std::size_t j = 0; j < plc_.num_simplices(); ++j) {
-        const ExteriorSide ext = plc_.exterior_of(j);
-        if (ext == ExteriorSide::None) continue;
-        predicates::Coords<D + 1> cone;
-        const auto c = constraint_coords(j);
-        std::copy(c.begin(), c.end(), cone.begin());
-        cone[D] = origin;
-        domain.add_volume<D>(cone, ext == ExteriorSide::Positive);
+    std::vector<char> cancelled(plc_.num_simplices(), 0);
+    for (const Group& g : groups_) {
+      if (g.end - g.begin != 1) continue;
+      const auto& e = facets_[g.begin];
+      if (g.constraint != kNone && is_the_constraint(g) && plc_.exterior_of(g.constraint) != ExteriorSide::None &&
+          side_of_constraint(g.constraint, e) != exterior_sign(g.constraint)) {
+        cancelled[g.constraint] = 1;
+        continue;
       }
-    } else {
-      for (const Group& g : groups_) {
-        if (g.end - g.begin != 1) continue;
-        auto cone = coords(facets_[g.begin].simplex);
-        cone[facets_[g.begin].local] = origin;
-        domain.add_volume<D>(cone);
-      }
+      auto cone = coords(e.simplex);
+      cone[e.local] = origin;
+      simplices.add_volume<D>(cone);
+    }
+    for (std::size_t j = 0; j < plc_.num_simplices(); ++j) {
+      const ExteriorSide ext = plc_.exterior_of(j);
+      if (ext == ExteriorSide::None || cancelled[j]) continue;
+      predicates::Coords<D + 1> cone;
+      const auto c = constraint_coords(j);
+      std::copy(c.begin(), c.end(), cone.begin());
+      cone[D] = origin;
+      domain.add_volume<D>(cone, ext == ExteriorSide::Positive);
     }
     if (simplices.compare(domain) != Sign::Zero)
       fail("domain-volume", "the simplices' volume " + std::to_string(simplices.to_double()) +

@@ -36,10 +36,9 @@ bool read_run_option(ArgReader& args, RunOptions& options) {
   if (read_facets_option(args, options.facets)) return true;
   std::string v;
   if (args.value("--algorithm", v)) {
-    if (v == "sweep-sphere") options.algorithm = Algorithm::SweepSphere;
-    else if (v == "sweep-plane") options.algorithm = Algorithm::SweepPlane;
-    else if (v == "giftwrap" || v == "gift-wrap") options.algorithm = Algorithm::GiftWrap;
-    else throw UsageError("--algorithm must be sweep-sphere, sweep-plane or giftwrap, not '" + v + "'");
+    const std::optional<Algorithm> algorithm = algorithm_named(v);
+    if (!algorithm) throw UsageError("--algorithm must be " + algorithm_choices() + ", not '" + v + "'");
+    options.algorithm = *algorithm;
   } else if (args.value("--steiner", v)) {
     if (v == "auto") options.steiner = SteinerMode::Auto;
     else if (v == "none") options.steiner = SteinerMode::None;

@@ -11,7 +11,7 @@
 namespace sweepcdt::cli {
 
 struct RunOptions {
-  Algorithm algorithm = Algorithm::SweepSphere;
+  Algorithm algorithm = mesh_defaults().algorithm;
   SteinerMode steiner = mesh_defaults().steiner;  // --steiner auto|none (`cdt` sets none)
   FacetMode facets = mesh_defaults().facets;      // --facets triangles|coplanar (3D)
   bool keep_steiner = false;  // --keep-steiner-points: skip deleting the Steiner points a CDT can do without

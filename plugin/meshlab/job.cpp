@@ -107,7 +107,7 @@ void fill_cut_away(const io::VolumeMesh& mesh, const JobInput& in, JobResult& r)
 
 Choices choices() {
   Choices c;
-  c.algorithms = {"sweep-sphere", "sweep-plane", "giftwrap"};
+  for (const Algorithm a : kAlgorithms) c.algorithms.push_back(to_string(a));
   c.steiner = {"auto", "none"};
   c.facets = {"triangles", "coplanar"};
   c.axes = {"x", "y", "z"};
@@ -115,7 +115,7 @@ Choices choices() {
   // The converter's defaults (mesh_defaults(): Steiner points where needed, coplanar facets): a
   // MeshLab layer is a real surface, which most often has no CDT as given.
   const Options defaults = mesh_defaults();
-  c.default_algorithm = static_cast<int>(defaults.algorithm);  // Algorithm's order is that of the list
+  c.default_algorithm = static_cast<int>(std::find(std::begin(kAlgorithms), std::end(kAlgorithms), defaults.algorithm) - std::begin(kAlgorithms));
   c.default_steiner = defaults.steiner == SteinerMode::Auto ? 0 : 1;
   c.default_facets = defaults.facets == FacetMode::Coplanar ? 1 : 0;
   return c;
@@ -132,7 +132,7 @@ JobResult run_job(const JobInput& in) {
     if (in.output.empty()) throw JobError("no output file given");
     const std::optional<io::MeshFormat> format = io::mesh_format_of(in.output);
     if (!format) throw JobError(in.output + ": unknown volume mesh extension (use .mesh, .vtu, .msh, .node or .inp)");
-    if (in.algorithm < 0 || in.algorithm > 2 || in.steiner < 0 || in.steiner > 1 || in.facets < 0 || in.facets > 1 ||
+    if (in.algorithm < 0 || in.algorithm >= static_cast<int>(std::size(kAlgorithms)) || in.steiner < 0 || in.steiner > 1 || in.facets < 0 || in.facets > 1 ||
         in.cut_axis < 0 || in.cut_axis > 2 || !(in.cut_fraction >= 0 && in.cut_fraction <= 1))
       throw JobError("a parameter is out of range");
     const double snap = parse_snap(in.snap);
@@ -169,7 +169,7 @@ JobResult run_job(const JobInput& in) {
     const Plc<3> plc = io::to_plc(surface, report);
 
     Options options;
-    options.algorithm = static_cast<Algorithm>(in.algorithm);
+    options.algorithm = kAlgorithms[in.algorithm];
     options.steiner = in.steiner == 0 ? SteinerMode::Auto : SteinerMode::None;
     options.facets = in.facets == 1 ? FacetMode::Coplanar : FacetMode::Triangles;
     CdtStatistics stats;

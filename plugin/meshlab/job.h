@@ -14,7 +14,7 @@ namespace sweepcdt::meshlab {
 
 // The choices of the filter's enum parameters, in order, and the library's defaults among them.
 struct Choices {
-  std::vector<std::string> algorithms;   // "sweep-sphere", "sweep-plane", "giftwrap"
+  std::vector<std::string> algorithms;   // kAlgorithms' names: "cavity-sweep" (the default), "sweep-sphere", ...
   std::vector<std::string> steiner;      // "auto", "none"
   std::vector<std::string> facets;       // "triangles", "coplanar"
   std::vector<std::string> axes;         // "x", "y", "z"

@@ -182,7 +182,7 @@ TEST(CliMesh, EveryAlgorithmGivesTheSameMesh) {
   TempDir dir;
   const auto input = quoted(shared_data() / "glb/cubevc.glb");
   std::optional<std::pair<std::vector<double>, std::set<std::vector<uint32_t>>>> first;
-  for (const char* algorithm : {"sweep-sphere", "sweep-plane", "giftwrap"}) {
+  for (const char* algorithm : {"cavity-sweep", "sweep-sphere", "sweep-plane", "giftwrap"}) {
     const auto out = dir.path() / (std::string(algorithm) + ".mesh");
     const CliRun r = run(input + " -o " + quoted(out) + " --algorithm " + algorithm, dir);
     ASSERT_EQ(r.exit_code, 0) << algorithm << "\n" << r.out;

@@ -86,7 +86,7 @@ TEST(CliUsage, BareInputIsTheMeshCommand) {
   ASSERT_EQ(explicit_mesh.exit_code, 0) << explicit_mesh.out;
   EXPECT_EQ(bytes_of(out), first);
   EXPECT_TRUE(bare.says(kIcosahedron + " -> " + out.string() + ": ")) << bare.out;
-  EXPECT_TRUE(bare.says("0 Steiner points (sweep-sphere,")) << bare.out;
+  EXPECT_TRUE(bare.says("0 Steiner points (cavity-sweep,")) << bare.out;
   EXPECT_TRUE(run(kIcosahedron + " -o " + quoted(out) + " --quiet", dir).out.empty());
 }
 

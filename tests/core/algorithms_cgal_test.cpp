@@ -27,7 +27,7 @@ using Triangle = std::set<uint32_t>;
 
 namespace {
 
-constexpr Algorithm kAlgorithms[] = {Algorithm::GiftWrap, Algorithm::SweepSphere, Algorithm::SweepPlane};
+// Every algorithm: sweepcdt::kAlgorithms (the cavity sweep, the two sweeps, gift-wrapping).
 
 template <int D>
 Triangulation<D> run(const Plc<D>& plc, Algorithm algorithm) {

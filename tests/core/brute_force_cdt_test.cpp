@@ -28,7 +28,7 @@ using Set = std::set<std::vector<uint32_t>>;
 
 namespace {
 
-constexpr Algorithm kAlgorithms[] = {Algorithm::GiftWrap, Algorithm::SweepSphere, Algorithm::SweepPlane};
+// Every algorithm: sweepcdt::kAlgorithms (the cavity sweep, the two sweeps, gift-wrapping).
 
 // The PLC with full precision, so a failure can be replayed.
 template <int D>

@@ -20,7 +20,7 @@ using namespace sweepcdt;
 
 namespace {
 
-constexpr Algorithm kAlgorithms[] = {Algorithm::GiftWrap, Algorithm::SweepSphere, Algorithm::SweepPlane};
+// Every algorithm: sweepcdt::kAlgorithms (the cavity sweep, the two sweeps, gift-wrapping).
 
 bool is_permutation_of_ids(const std::vector<uint32_t>& rank) {
   std::vector<uint32_t> sorted = rank;

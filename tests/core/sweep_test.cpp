@@ -25,11 +25,11 @@ Triangulation<D> run(const Plc<D>& plc, Algorithm algorithm, CdtStatistics* stat
   return cdt(plc, options);
 }
 
-// All three algorithms give the same simplices, and validate() accepts them.
+// All algorithms give the same simplices, and validate() accepts them.
 template <int D>
 void expect_agreement(const Plc<D>& plc, const std::string& what) {
   const auto reference = run(plc, Algorithm::GiftWrap);
-  for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane}) {
+  for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane, Algorithm::CavitySweep}) {
     Triangulation<D> tri;
     try {
       tri = run(plc, a);
@@ -97,7 +97,7 @@ TEST(Sweep, FacetBoundedShapes) {
 
 TEST(Sweep, SchonhardtHasNoCdt) {
   for (double twist : {0.0, 0.5})
-    for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane})
+    for (Algorithm a : {Algorithm::SweepSphere, Algorithm::SweepPlane, Algorithm::CavitySweep})
       EXPECT_THROW(run(fixtures::twisted_prism(twist), a), NoCdtError) << to_string(a) << " twist " << twist;
 }
 
@@ -116,7 +116,8 @@ TEST(Sweep, StatisticsAreReported) {
 
 // Progress reports (vertices reached of all vertices) and cancellation, for both algorithm families.
 TEST(Progress, ReportsAndCancels) {
-  for (const auto& [algorithm, points] : {std::pair{Algorithm::GiftWrap, 800}, std::pair{Algorithm::SweepSphere, 4000}}) {
+  for (const auto& [algorithm, points] :
+       {std::pair{Algorithm::GiftWrap, 800}, std::pair{Algorithm::SweepSphere, 4000}, std::pair{Algorithm::CavitySweep, 4000}}) {
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> u(0, 1);
     Plc<3> plc;

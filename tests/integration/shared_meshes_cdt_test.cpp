@@ -1,7 +1,8 @@
-// Every valid closed mesh of ../shared/data through the importer and all three CDT algorithms: they
+// Every valid closed mesh of ../shared/data through the importer and all four CDT algorithms: they
 // must agree — identical, validate()-clean tetrahedralizations under the same perturbation order
 // (paper §6), or all NoCdtError (the PLC has no CDT without Steiner points: issue 7). Gift-wrapping,
-// O(n_v n_s), joins for the small meshes only.
+// O(n_v n_s), joins for the small meshes only. The cavity sweep must find each CDT itself, without
+// sweeping the whole PLC.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,10 +41,11 @@ struct Outcome {
 };
 
 // The simplices, or nothing when the algorithm proves there is no CDT.
-std::optional<Outcome> run(const Plc<3>& plc, Algorithm algorithm, std::string& why) {
+std::optional<Outcome> run(const Plc<3>& plc, Algorithm algorithm, std::string& why, CdtStatistics* statistics = nullptr) {
   Options options;
   options.algorithm = algorithm;
-  CdtStatistics stats;
+  CdtStatistics local;
+  CdtStatistics& stats = statistics ? *statistics : local;
   options.statistics = &stats;
   try {
     const auto tri = cdt(plc, options);
@@ -67,11 +69,18 @@ TEST(SharedMeshes, AllAlgorithmsAgree) {
       continue;
     }
     const Plc<3> plc = io::import_plc(path);
-    std::string why_plane, why_sphere, why_gift;
+    std::string why_plane, why_sphere, why_gift, why_cavity;
     const auto plane = run(plc, Algorithm::SweepPlane, why_plane);
     const auto sphere = run(plc, Algorithm::SweepSphere, why_sphere);
     EXPECT_EQ(plane.has_value(), sphere.has_value()) << name << ": " << why_plane << why_sphere;
     if (plane && sphere) EXPECT_EQ(*plane, *sphere) << name;
+    CdtStatistics cavity_stats;
+    const auto cavity = run(plc, Algorithm::CavitySweep, why_cavity, &cavity_stats);
+    EXPECT_EQ(cavity.has_value(), plane.has_value()) << name << ": " << why_cavity << why_plane;
+    if (cavity && plane) {
+      EXPECT_EQ(*cavity, *plane) << name;
+      EXPECT_EQ(cavity_stats.algorithm, Algorithm::CavitySweep) << name << ": swept whole";
+    }
     if (plc.num_points() <= 1500) {
       const auto gift = run(plc, Algorithm::GiftWrap, why_gift);
       EXPECT_EQ(gift.has_value(), plane.has_value()) << name << ": " << why_gift << why_plane;

@@ -38,7 +38,9 @@ TEST(MeshLabJob, DefaultsAreTheConverters) {
   const Choices c = choices();
   const Options defaults = mesh_defaults();  // the converter's
   EXPECT_EQ(c.algorithms.at(c.default_algorithm), to_string(defaults.algorithm));
-  for (int a = 0; a < 3; ++a) EXPECT_EQ(c.algorithms.at(a), to_string(static_cast<Algorithm>(a)));  // the job casts the index
+  ASSERT_EQ(c.algorithms.size(), std::size(kAlgorithms));
+  for (std::size_t a = 0; a < c.algorithms.size(); ++a) EXPECT_EQ(c.algorithms[a], to_string(kAlgorithms[a]));  // the job's index
+  EXPECT_EQ(c.default_algorithm, 0) << "the default first";
   EXPECT_EQ(c.facets.at(c.default_facets), defaults.facets == FacetMode::Coplanar ? "coplanar" : "triangles");
   EXPECT_EQ(c.steiner.at(c.default_steiner), defaults.steiner == SteinerMode::Auto ? "auto" : "none");
   EXPECT_EQ(c.facets.at(c.default_facets), "coplanar");  // as `sweepcdt mesh`

@@ -103,7 +103,7 @@ def filter_script(path, output, cut_position=0.5, cut_axis=0, steiner=0):
                 ' <filter name="Tetrahedralize (constrained Delaunay)">\n'
                 '  <Param type="RichSaveFile" value="%s" ext=".mesh" name="OutputFile" description="" tooltip=""/>\n'
                 % output
-                + enum("Algorithm", 0, ["sweep-sphere", "sweep-plane", "giftwrap"])
+                + enum("Algorithm", 0, ["cavity-sweep", "sweep-sphere", "sweep-plane", "giftwrap"])
                 + enum("Steiner", steiner, ["auto", "none"])
                 + enum("Facets", 1, ["triangles", "coplanar"])
                 + '  <Param type="RichString" value="0" name="Snap" description="" tooltip=""/>\n'

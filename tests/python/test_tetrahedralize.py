@@ -70,10 +70,11 @@ def test_nested_cube_is_a_cavity():
 
 
 def test_options_are_the_converters():
-    assert sweepcdt.DEFAULTS["algorithm"] == "sweep-sphere"
+    assert sweepcdt.DEFAULTS["algorithm"] == "cavity-sweep" == sweepcdt.ALGORITHMS[0]
     assert set(sweepcdt.DEFAULTS) == {"algorithm", "steiner", "facets"}
     points, triangles = unit_cube()
-    for algorithm in ("sweep-sphere", "sweep-plane", "giftwrap"):
+    assert sweepcdt.ALGORITHMS == ["cavity-sweep", "sweep-sphere", "sweep-plane", "giftwrap"]
+    for algorithm in sweepcdt.ALGORITHMS:
         mesh = sweepcdt.tetrahedralize(points, triangles, algorithm=algorithm, check=True)
         assert mesh.stats["algorithm"] == algorithm and mesh.stats["checked"]
     coplanar = sweepcdt.tetrahedralize(points, triangles, facets="coplanar")

@@ -17,7 +17,9 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sweepcdt/error.h"
@@ -29,20 +31,34 @@
 namespace sweepcdt {
 
 enum class Algorithm {
-  SweepSphere,  // paper §3: SWEEPCDT with an expanding sphere; any domain (the default)
+  SweepSphere,  // paper §3: SWEEPCDT with an expanding sphere; any domain
   SweepPlane,   // paper §3: SWEEPCDT with a sweep plane; facet-bounded domains (a convex hull
                 // domain is swept with the sphere instead, and the statistics say so)
   GiftWrap,     // paper §2: O(n_v n_f n_s); the reference the sweeps are tested against
+  CavitySweep,  // D = 3 (the default): the Delaunay tetrahedralization, its tetrahedra that cross a
+                // constraint triangulated again by the sweep plane, in cavities (core/src/cavity/
+                // cavity_cdt.h); the sweep sphere when that cannot decide, and for D != 3
 };
 
 const char* to_string(Algorithm algorithm);
 
+// Every algorithm, the default first: the order of the hosts' and the command line's lists.
+inline constexpr Algorithm kAlgorithms[] = {Algorithm::CavitySweep, Algorithm::SweepSphere, Algorithm::SweepPlane,
+                                            Algorithm::GiftWrap};
+// The algorithm to_string() names ("gift-wrap" too), or none.
+std::optional<Algorithm> algorithm_named(std::string_view name);
+// "cavity-sweep, sweep-sphere, sweep-plane or giftwrap": for messages.
+std::string algorithm_choices();
+
 // What a run did, for callers who want to know (CLI --stats, benchmarks).
 struct CdtStatistics {
-  Algorithm algorithm = Algorithm::SweepSphere;  // the one that actually ran
+  Algorithm algorithm = Algorithm::CavitySweep;  // the one that actually ran
   uint64_t simplices = 0;
   uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
   uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
+  // CavitySweep: constraints that are no face of the Delaunay tetrahedralization, and its tetrahedra
+  // triangulated again in cavities (those they disturb and those enclosed by them).
+  uint64_t missing_constraints = 0, cavity_tetrahedra = 0;
   uint64_t steiner_points = 0, steiner_rounds = 0;  // the points the result has; refinement rounds
   uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
@@ -104,7 +120,7 @@ enum class FacetMode {
 };
 
 struct Options {
-  Algorithm algorithm = Algorithm::SweepSphere;
+  Algorithm algorithm = Algorithm::CavitySweep;
   SteinerMode steiner = SteinerMode::None;
   FacetMode facets = FacetMode::Triangles;
   // With Steiner points: delete each again, last added first, when the PLC left still has a CDT

@@ -112,12 +112,36 @@ class Delaunay3 {
     return finite_tets();
   }
 
-  void build(const std::vector<uint32_t>& order) {
+  void build(const std::vector<uint32_t>& order, const std::function<void(std::size_t)>& inserted = {}) {
     vertex_tet_.assign(points_.size() / 3, kInfinite);
     touched_round_.assign(points_.size() / 3, round_);
     const std::vector<uint32_t> rest = start(order);
     cells_.reserve(7 * rest.size() + 16);
-    for (const uint32_t id : rest) insert(id);
+    constexpr std::size_t kReportEvery = 1024;
+    for (std::size_t k = 0; k < rest.size(); ++k) {
+      insert(rest[k]);
+      if (inserted && k % kReportEvery == kReportEvery - 1) inserted(k + 5);
+    }
+  }
+
+  // The live finite tetrahedra, renumbered densely, with their adjacency (delaunay3.h).
+  DelaunayMesh mesh() const {
+    std::vector<uint32_t> renumbered(cells_.size(), kInfinite);
+    uint32_t count = 0;
+    for (uint32_t t = 0; t < cells_.size(); ++t)
+      if (!dead_[t] && infinite_index(t) == 4) renumbered[t] = count++;
+    DelaunayMesh result;
+    result.tets.reserve(4 * std::size_t{count});
+    result.neighbors.reserve(4 * std::size_t{count});
+    for (uint32_t t = 0; t < cells_.size(); ++t) {
+      if (renumbered[t] == kInfinite) continue;
+      for (int i = 0; i < 4; ++i) {
+        result.tets.push_back(cells_[t].v[i]);
+        const uint32_t across = cells_[t].n[i], u = renumbered[across >> 2];
+        result.neighbors.push_back(u == kInfinite ? kInfinite : 4 * u + (across & 3u));
+      }
+    }
+    return result;
   }
 
   // Inserts the points with ids from vertex_tet_.size() on (appended to the points since).
@@ -519,6 +543,13 @@ bool DelaunayEdges::may_have_changed(uint32_t a, uint32_t b) const {
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points) {
   check_points(points);
   return Delaunay3(points).run(brio_order(points));
+}
+
+DelaunayMesh delaunay_mesh(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted) {
+  check_points(points);
+  Delaunay3 triangulation(points);
+  triangulation.build(brio_order(points), inserted);
+  return triangulation.mesh();
 }
 
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra_in_order(const std::vector<double>& points,

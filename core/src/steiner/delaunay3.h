@@ -16,6 +16,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -26,6 +27,17 @@ namespace sweepcdt::detail {
 // Requires at least 4 affinely independent points; throws sweepcdt::Error otherwise, and for
 // duplicate or non-finite points.
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points);
+
+// The same triangulation with its adjacency, in Triangulation's encoding (sweepcdt/triangulation.h):
+// `tets` 4 point ids per tetrahedron, positively oriented; `neighbors` per facet i of tetrahedron t
+// (opposite t's vertex i) 4 * u + j, facet j of tetrahedron u, or kNone on the convex hull.
+// `inserted`, when given, is called with the number of points inserted so far every 1024 insertions;
+// it may throw (to cancel).
+struct DelaunayMesh {
+  std::vector<uint32_t> tets;
+  std::vector<uint32_t> neighbors;
+};
+DelaunayMesh delaunay_mesh(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
 
 // The same triangulation, inserting the points in the given order (a permutation of 0..n-1) instead
 // of the spatial order. For tests: the result must not depend on the order.

@@ -27,6 +27,10 @@ DEFAULTS = {
 }
 
 
+#: The algorithms the command offers, the default first.
+ALGORITHMS = sweepcdt.ALGORITHMS
+
+
 class SweepCDTError(Exception):
     """Why an object cannot be meshed (not a solid, not closed, no CDT, ...): the message is the
     converter's."""

@@ -37,7 +37,7 @@ class TetrahedralizePanel:
         self.form.setWindowTitle(f"Tetrahedralize {obj.Label}")
         layout = QtGui.QFormLayout(self.form)
         d = sweepcdt_femmesh.DEFAULTS
-        self.algorithm = self._combo(["sweep-sphere", "sweep-plane", "giftwrap"], d["algorithm"])
+        self.algorithm = self._combo(list(sweepcdt_femmesh.ALGORITHMS), d["algorithm"])
         self.steiner = self._combo(["auto", "none"], d["steiner"])
         self.facets = self._combo(["coplanar", "triangles"], d["facets"])
         self.deflection = QtGui.QDoubleSpinBox()

@@ -115,6 +115,12 @@ py::dict defaults() {
   return d;
 }
 
+py::list algorithms() {
+  py::list names;
+  for (const Algorithm a : kAlgorithms) names.append(to_string(a));
+  return names;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_sweepcdt, m) {
@@ -133,4 +139,5 @@ PYBIND11_MODULE(_sweepcdt, m) {
         py::arg("regions"), py::arg("triangles"), py::arg("triangle_ids"), py::arg("format"));
   m.def("check_files", &check_files, py::arg("input"), py::arg("output"), py::arg("facets"), py::arg("snap"));
   m.def("defaults", &defaults, "The converter's defaults: {'algorithm': ..., 'steiner': ..., 'facets': ...}");
+  m.def("algorithms", &algorithms, "The algorithms' names, the default first.");
 }

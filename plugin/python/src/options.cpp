@@ -20,10 +20,9 @@ RunKeywords run_keywords(const std::optional<std::string>& algorithm, const std:
                          const std::optional<std::string>& facets, std::optional<double> snap, bool check) {
   RunKeywords k = converter_defaults();
   if (algorithm) {
-    if (*algorithm == "sweep-sphere") k.algorithm = Algorithm::SweepSphere;
-    else if (*algorithm == "sweep-plane") k.algorithm = Algorithm::SweepPlane;
-    else if (*algorithm == "giftwrap" || *algorithm == "gift-wrap") k.algorithm = Algorithm::GiftWrap;
-    else throw std::invalid_argument("algorithm must be 'sweep-sphere', 'sweep-plane' or 'giftwrap', not '" + *algorithm + "'");
+    const std::optional<Algorithm> named = algorithm_named(*algorithm);
+    if (!named) throw std::invalid_argument("algorithm must be " + algorithm_choices() + ", not '" + *algorithm + "'");
+    k.algorithm = *named;
   }
   if (steiner) {
     if (*steiner == "auto") k.steiner = SteinerMode::Auto;

@@ -8,7 +8,7 @@
     sweepcdt.mesh_file("part.stl", "part.inp")              # file to file, as `sweepcdt mesh` does
 
 Options are the converter's (``sweepcdt help mesh``), spelled the same: ``algorithm``
-("sweep-sphere", "sweep-plane", "giftwrap"), ``steiner`` ("auto", "none"), ``facets``
+(``sweepcdt.ALGORITHMS``: "cavity-sweep", "sweep-sphere", "sweep-plane", "giftwrap"), ``steiner`` ("auto", "none"), ``facets``
 ("triangles", "coplanar"), ``snap`` (None, or a tolerance such as 1e-12), ``check``; their defaults
 are the converter's (``sweepcdt.DEFAULTS``). Failures raise the exceptions of ``sweepcdt.errors``
 (``InvalidInputError``, ``NoCdtError``, ``VertexRemovalError``, ``OutputError``, ``CheckError``), bad arrays ``ValueError``;
@@ -18,6 +18,7 @@ computations release the GIL, and Ctrl-C raises KeyboardInterrupt after cancelli
 import os
 
 from . import errors
+from ._sweepcdt import algorithms as _algorithms
 from ._sweepcdt import cdt as _cdt
 from ._sweepcdt import check_files as _check_files
 from ._sweepcdt import defaults as _defaults
@@ -31,13 +32,15 @@ from .errors import CancelledError, CheckError, Error, InvalidInputError, NoCdtE
 from .result import Surface, TetMesh, Triangulation
 
 __all__ = [
-    "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "check_files", "DEFAULTS", "TetMesh", "Triangulation", "Surface",
+    "tetrahedralize", "read_surface", "mesh_file", "cdt", "read_volume_mesh", "write_volume_mesh", "check_files", "DEFAULTS", "ALGORITHMS", "TetMesh", "Triangulation", "Surface",
     "EditableCdt", "EditedTriangulation", "RemovalReport",
     "Error", "InvalidInputError", "NoCdtError", "VertexRemovalError", "OutputError", "CheckError", "CancelledError",
 ]
 
 #: The converter's defaults (read from its own option parser), used by every function here.
 DEFAULTS = _defaults()
+#: The values ``algorithm`` takes, the default first.
+ALGORITHMS = _algorithms()
 
 
 def tetrahedralize(points, triangles, *, algorithm=DEFAULTS["algorithm"], steiner=DEFAULTS["steiner"],
@@ -49,7 +52,7 @@ def tetrahedralize(points, triangles, *, algorithm=DEFAULTS["algorithm"], steine
     others are cavities (or bodies inside cavities); orientation is repaired per shell. Points are
     used exactly (no tolerance anywhere): exactly equal points are merged.
 
-    algorithm: "sweep-sphere" (default), "sweep-plane" or "giftwrap".
+    algorithm: "cavity-sweep" (default), "sweep-sphere", "sweep-plane" or "giftwrap".
     steiner: "auto" adds Steiner points on the surface where it has no CDT as given; "none" raises
         NoCdtError instead.
     facets: "triangles" (every input triangle is a facet) or "coplanar" (edge-adjacent, exactly

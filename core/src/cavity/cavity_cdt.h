@@ -1,0 +1,35 @@
+// The CDT of a 3D PLC from the Delaunay triangulation of its points (Algorithm::CavitySweep; beyond
+// the paper, after the facet recovery by cavities of Shewchuk 2003 and Si 2008, with SWEEPCDT as the
+// cavity triangulator):
+//   1. the Delaunay triangulation of the points under the perturbation of paper §6 (delaunay3.h);
+//   2. the tetrahedra disturbed by a constraint that is no Delaunay face (disturbed.h);
+//   3. the others placed inside or outside the domain by a flood fill across facets that are no
+//      constraint, from the hull and from the constraints' exterior notations (domain_sides.h);
+//   4. the rest of the domain — the cavities — as a PLC of its own: the facets between kept and
+//      cavity tetrahedra notated with the kept side exterior, and the constraints in the cavities
+//      (cavity_plc.h); its CDT by the sweep plane (§3);
+//   5. the kept tetrahedra and the cavities' together.
+// Why that is the CDT, when the PLC has one: a kept tetrahedron has an empty (perturbed) circumsphere
+// and meets the constraints only in common faces, so it is constrained Delaunay, and under the
+// perturbation the CDT holds every constrained Delaunay tetrahedron of the domain (two of them never
+// overlap). The CDT's tetrahedra in the cavities then triangulate the cavity PLC, and each is
+// constrained Delaunay there too (more occluders, fewer points), so they are the cavity PLC's unique
+// CDT, which the sweep finds (Theorem 5). The cavity PLC numbers its points in their global order, so
+// the perturbation decides every tie as in the whole PLC.
+// Most closed surfaces are mostly Delaunay already (a jittered sphere of 330k triangles has every
+// triangle in its Delaunay triangulation), so the sweep's work shrinks to the cavities.
+#pragma once
+#include <optional>
+
+#include "sweepcdt/cdt.h"
+
+namespace sweepcdt::detail {
+
+// The simplices of the CDT of a checked PLC and their neighbours (the caller validates them), or
+// nullopt when this path cannot tell: fewer than 4 affinely independent points, a convex hull domain
+// whose cavities reach the hull (cavity_plc.h), no CDT found in a cavity (then the PLC has none, and
+// the whole sweep says so with its witness), or anything it did not expect. The caller then sweeps
+// the whole PLC. Throws CancelledError.
+std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats);
+
+}  // namespace sweepcdt::detail

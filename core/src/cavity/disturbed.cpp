@@ -1,0 +1,112 @@
+#include "disturbed.h"
+
+#include <algorithm>
+#include <array>
+
+#include "../simplex_interior.h"
+#include "../simplex_intersection.h"
+#include "../tuple_map.h"
+#include "sweepcdt/triangulation.h"
+
+namespace sweepcdt::detail {
+namespace {
+
+std::array<uint32_t, 3> sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
+  std::array<uint32_t, 3> k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+// Facet i of tetrahedron `tet` (its vertices but vertex i, in order).
+std::array<uint32_t, 3> facet(const uint32_t* tet, int i) {
+  std::array<uint32_t, 3> f;
+  for (int k = 0, r = 0; k < 4; ++k)
+    if (k != i) f[r++] = tet[k];
+  return f;
+}
+
+// Does constraining triangle `tri` disturb tetrahedron `tet` (disturbed.h)? Exact: interior_meets()
+// decides whether it meets the open tetrahedron, improper_intersection() whether it meets a facet
+// other than in the face their shared vertices span — which covers overlaps and crossings in a
+// facet's plane, the cases that leave the interior untouched.
+bool disturbs(const Plc<3>& plc, const uint32_t* tet, const uint32_t* tri) {
+  const std::array<const double*, 3> t{plc.point(tri[0]), plc.point(tri[1]), plc.point(tri[2])};
+  const std::array<uint32_t, 3> t_ids{tri[0], tri[1], tri[2]};
+  if (interior_meets<3>({plc.point(tet[0]), plc.point(tet[1]), plc.point(tet[2]), plc.point(tet[3])}, t)) return true;
+  for (int i = 0; i < 4; ++i) {
+    const std::array<uint32_t, 3> f = facet(tet, i);
+    if (improper_intersection<3>({plc.point(f[0]), plc.point(f[1]), plc.point(f[2])}, f, t, t_ids)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt) {
+  const std::size_t m = plc.num_simplices(), tets = dt.tets.size() / 4;
+  TupleMap<3> constraint_of(m);
+  for (uint32_t c = 0; c < m; ++c) {
+    const uint32_t* v = plc.simplex(c);
+    constraint_of.emplace(sorted_triple(v[0], v[1], v[2]), c);
+  }
+  ConstraintFaces result;
+  result.of_facet.assign(4 * tets, kNone);
+  std::vector<uint8_t> present(m, 0);
+  for (uint32_t t = 0; t < tets; ++t)
+    for (int i = 0; i < 4; ++i) {
+      const std::array<uint32_t, 3> f = facet(&dt.tets[4 * t], i);
+      const uint32_t c = constraint_of.find(sorted_triple(f[0], f[1], f[2]));
+      if (c == TupleMap<3>::kAbsent) continue;
+      result.of_facet[4 * t + i] = c;
+      present[c] = 1;
+    }
+  for (uint32_t c = 0; c < m; ++c)
+    if (!present[c]) result.missing.push_back(c);
+  return result;
+}
+
+std::vector<uint8_t> disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing) {
+  const std::size_t tets = dt.tets.size() / 4;
+  std::vector<uint8_t> disturbed(tets, 0);
+  if (missing.empty()) return disturbed;
+  std::vector<uint32_t> tet_at(plc.num_points(), kNone);
+  for (uint32_t t = 0; t < tets; ++t)
+    for (int i = 0; i < 4; ++i) tet_at[dt.tets[4 * t + i]] = t;
+  std::vector<uint32_t> visited(tets, 0), star, queue;
+  uint32_t stamp = 0;
+  const auto visit = [&](uint32_t t) {
+    if (visited[t] == stamp) return false;
+    visited[t] = stamp;
+    return true;
+  };
+  for (const uint32_t c : missing) {
+    ++stamp;
+    const uint32_t* tri = plc.simplex(c);
+    // The tetrahedra around the constraint's first vertex a: a walk across the facets through a.
+    const uint32_t a = tri[0];
+    queue.clear();
+    star.assign(1, tet_at[a]);
+    visit(star[0]);
+    for (std::size_t head = 0; head < star.size(); ++head) {
+      const uint32_t t = star[head];
+      for (int i = 0; i < 4; ++i) {
+        const uint32_t nb = dt.neighbors[4 * t + i];
+        if (dt.tets[4 * t + i] != a && nb != kNone && visit(nb / 4)) star.push_back(nb / 4);
+      }
+      if (disturbs(plc, &dt.tets[4 * t], tri)) queue.push_back(t);
+    }
+    if (queue.empty()) return {};  // impossible for a missing constraint: fall back
+    // Then outward through neighbours from every disturbed tetrahedron.
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const uint32_t t = queue[head];
+      disturbed[t] = 1;
+      for (int i = 0; i < 4; ++i) {
+        const uint32_t nb = dt.neighbors[4 * t + i];
+        if (nb != kNone && visit(nb / 4) && disturbs(plc, &dt.tets[nb / 4 * 4], tri)) queue.push_back(nb / 4);
+      }
+    }
+  }
+  return disturbed;
+}
+
+}  // namespace sweepcdt::detail
