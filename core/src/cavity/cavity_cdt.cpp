@@ -75,23 +75,22 @@ std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& opt
   }
   const ConstraintFaces constraints = constraint_faces(plc, dt);
   stats.missing_constraints = constraints.missing.size();
-  const std::vector<uint8_t> disturbed = disturbed_tetrahedra(plc, dt, constraints.missing);
-  if (disturbed.size() != dt.tets.size() / 4) return std::nullopt;
-  const std::vector<Place> place = domain_sides(plc, dt, constraints.of_facet, disturbed);
+  const Disturbed disturbed = disturbed_tetrahedra(plc, dt, constraints.missing);
+  if (disturbed.tets.size() != dt.tets.size() / 4) return std::nullopt;
+  const std::vector<Place> place = domain_sides(plc, dt, constraints.of_facet, disturbed.tets);
   if (place.empty()) return std::nullopt;
-
   for (const Place p : place) stats.cavity_tetrahedra += p == Place::Cavity;
-  const CavityPlc cavity = cavity_plc(plc, dt, constraints.of_facet, constraints.missing, place);
-  if (cavity.reaches_hull) return std::nullopt;
+  const Cavities cavities = cavity_plcs(plc, dt, constraints.of_facet, constraints.missing, disturbed.first, place);
+  if (cavities.reaches_hull) return std::nullopt;
+
   std::vector<uint32_t> cavity_simplices;
-  if (!cavity.plc.simplices.empty()) {
+  for (const CavityPlc& cavity : cavities.parts) {
     Triangulation<3> part;
     try {
       part = sweep_cdt<3>(cavity.plc, seed_simplex(cavity.plc), options, stats);
     } catch (const NoCdtError&) {
       return std::nullopt;  // the PLC has no CDT: the whole sweep finds out again and names a witness
     }
-    cavity_simplices.reserve(part.simplices.size());
     for (const uint32_t v : part.simplices) cavity_simplices.push_back(cavity.global[v]);
   }
   return assemble(plc, dt, place, cavity_simplices);

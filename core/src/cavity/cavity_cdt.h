@@ -32,4 +32,5 @@ namespace sweepcdt::detail {
 // the whole PLC. Throws CancelledError.
 std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats);
 
+
 }  // namespace sweepcdt::detail

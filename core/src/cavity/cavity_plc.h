@@ -1,4 +1,5 @@
-// Step 4 of cavity_cdt.h: the part of the domain not covered by kept tetrahedra, as a PLC.
+// Step 4 of cavity_cdt.h: the part of the domain not covered by kept tetrahedra, as PLCs, one per
+// cavity (a component of Cavity tetrahedra across their facets).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -12,21 +13,27 @@ namespace sweepcdt::detail {
 struct CavityPlc {
   Plc<3> plc;                    // facet-bounded; its points are `global`'s, in that order
   std::vector<uint32_t> global;  // per cavity point: its id in the whole PLC (increasing)
-  // A convex hull domain whose cavities reach the hull: no cavity PLC (plc is empty). The CDT's hull
-  // facets there need not be the Delaunay ones — a constraint's edge can lie in a hull facet's plane,
-  // or a constraint can hide a coplanar hull point — so they cannot bound a cavity.
+};
+
+struct Cavities {
+  std::vector<CavityPlc> parts;
+  // A convex hull domain whose cavities reach the hull: no parts. The CDT's hull facets there need
+  // not be the Delaunay ones — a constraint's edge can lie in a hull facet's plane, or a constraint
+  // can hide a coplanar hull point — so they cannot bound a cavity.
   bool reaches_hull = false;
 };
 
-// The constraints of the cavities, each once:
-//   - every facet between an Inside and a Cavity tetrahedron, notated with the Inside side exterior
-//     (unless it is a constraint whose notation puts the cavity side outside the domain: then the
-//     cavity does not reach it);
-//   - every other constraint that is missing from `dt` or is a facet of a Cavity tetrahedron, with
-//     its own notation.
+// The constraints of each cavity, each once:
+//   - every facet between an Inside tetrahedron and one of the cavity's, notated with the Inside side
+//     exterior (unless it is a constraint whose notation puts the cavity side outside the domain:
+//     then the cavity does not reach it);
+//   - every other constraint that is missing from `dt` (in the cavity of the tetrahedron it disturbs
+//     first: all it disturbs are connected) or is a facet of one of the cavity's tetrahedra, with its
+//     own notation.
 // The points: those of these constraints, and points on no constraint of the PLC at all that are
-// vertices of Cavity tetrahedra. No constraints means no cavity.
-CavityPlc cavity_plc(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& constraint_of_facet,
-                     const std::vector<uint32_t>& missing, const std::vector<Place>& place);
+// vertices of the cavity's tetrahedra.
+Cavities cavity_plcs(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& constraint_of_facet,
+                     const std::vector<uint32_t>& missing, const std::vector<uint32_t>& first_disturbed,
+                     const std::vector<Place>& place);
 
 }  // namespace sweepcdt::detail

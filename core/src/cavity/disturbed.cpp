@@ -65,10 +65,12 @@ ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt) {
   return result;
 }
 
-std::vector<uint8_t> disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing) {
+Disturbed disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing) {
   const std::size_t tets = dt.tets.size() / 4;
-  std::vector<uint8_t> disturbed(tets, 0);
-  if (missing.empty()) return disturbed;
+  Disturbed result;
+  result.tets.assign(tets, 0);
+  if (missing.empty()) return result;
+  std::vector<uint8_t>& disturbed = result.tets;
   std::vector<uint32_t> tet_at(plc.num_points(), kNone);
   for (uint32_t t = 0; t < tets; ++t)
     for (int i = 0; i < 4; ++i) tet_at[dt.tets[4 * t + i]] = t;
@@ -96,6 +98,7 @@ std::vector<uint8_t> disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh&
       if (disturbs(plc, &dt.tets[4 * t], tri)) queue.push_back(t);
     }
     if (queue.empty()) return {};  // impossible for a missing constraint: fall back
+    result.first.push_back(queue.front());
     // Then outward through neighbours from every disturbed tetrahedron.
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const uint32_t t = queue[head];
@@ -106,7 +109,7 @@ std::vector<uint8_t> disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh&
       }
     }
   }
-  return disturbed;
+  return result;
 }
 
 }  // namespace sweepcdt::detail

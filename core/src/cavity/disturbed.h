@@ -22,11 +22,15 @@ struct ConstraintFaces {
 
 ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt);
 
-// Per tetrahedron of `dt`: 1 when some missing constraint disturbs it. Each missing constraint's
-// disturbed tetrahedra are found by a search from the tetrahedra around its first vertex through
-// neighbours (they are connected across facets: every tetrahedron holding a point of the constraint's
-// relative interior is disturbed). Empty when the search finds none for a missing constraint, which
-// would contradict that (the caller then falls back to a full sweep).
-std::vector<uint8_t> disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing);
+struct Disturbed {
+  std::vector<uint8_t> tets;    // per tetrahedron of the mesh: 1 when some missing constraint disturbs it
+  std::vector<uint32_t> first;  // per missing constraint: one tetrahedron it disturbs
+};
+
+// Each missing constraint's disturbed tetrahedra are found by a search from the tetrahedra around its
+// first vertex through neighbours (they are connected across facets: every tetrahedron holding a
+// point of the constraint's relative interior is disturbed). Empty when the search finds none for a
+// missing constraint, which would contradict that (the caller then falls back to a full sweep).
+Disturbed disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing);
 
 }  // namespace sweepcdt::detail
