@@ -1,7 +1,8 @@
 // Times cdt() on a generated closed surface and prints one JSON line; optionally writes the surface
 // as OFF so bench/run_sweep.py can hand the same input to TetGen and CGAL.
 //
-//   sweep_bench SURFACE SIZE [--algorithm sweep-sphere|sweep-plane|giftwrap] [--repeat K] [--off PATH]
+//   sweep_bench SURFACE SIZE [--algorithm cavity-sweep|sweep-sphere|sweep-plane|giftwrap] [--repeat K]
+//               [--threads N] [--off PATH]
 //   SURFACE: icosphere | cospherical | torus | cavity | cube-points (random points, convex hull)
 //   SIZE:    icosphere/cospherical/cavity: subdivision levels; torus: quads around; cube-points: points
 #include <sys/resource.h>
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--algorithm")) options.algorithm = parse_algorithm(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--off")) off = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--threads")) options.threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
   }
   bench::Mesh mesh;
   const Plc<3> plc = make(argv[1], std::atoi(argv[2]), mesh);

@@ -10,6 +10,8 @@
 #include <string>
 
 #include "cavity/cavity_cdt.h"
+#include "cavity/delaunay_in_background.h"
+#include "parallel.h"
 #include "gift_wrap.h"
 #include "regions.h"
 #include "relabel.h"
@@ -87,12 +89,12 @@ Triangulation<D> build(const Plc<D>& plc, const Options& options, CdtStatistics&
 // Pairs the neighbours of the simplices `build` made of `plc` (unless it did), assigns regions, and
 // verifies them — validate() checks the neighbours too.
 template <int D>
-Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, CdtStatistics& stats, Stopwatch& clock) {
+Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
   stats.seconds_build += clock.lap();
   stats.simplices = tri.num_simplices();
   if (tri.neighbors.empty()) compute_neighbors(tri);
   detail::assign_regions(tri, plc);
-  const ValidationReport report = validate(tri, plc);
+  const ValidationReport report = validate(tri, plc, ValidationLevel::Full, options.threads);
   stats.seconds_finish += clock.lap();
   if (!report.ok())
     throw NoCdtError("no CDT: the constructed triangulation fails validation (" + report.failures.front().check + ": " +
@@ -105,27 +107,31 @@ Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, CdtStatistics& 
 // the sphere when its own path cannot decide (cavity/cavity_cdt.h), or when its result fails
 // validation — which happens only when the PLC has no CDT: a cavity can have a CDT while the whole
 // does not; the whole sweep then fails too, with its witness.
+// `delaunay`: the Delaunay tetrahedralization of plc's points, when refinement or cdt() computed it.
 template <int D>
-Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock) {
+Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
+                             const detail::DelaunayMesh* delaunay = nullptr) {
   if constexpr (D == 3) {
     if (options.algorithm == Algorithm::CavitySweep) {
       stats.algorithm = Algorithm::CavitySweep;
-      if (std::optional<Triangulation<3>> tri = detail::cavity_cdt(plc, options, stats)) {
+      if (std::optional<Triangulation<3>> tri = detail::cavity_cdt(plc, options, stats, delaunay)) {
         try {
-          return finish(std::move(*tri), plc, stats, clock);
+          return finish(std::move(*tri), plc, options, stats, clock);
         } catch (const NoCdtError&) {
           // swept whole below
         }
       }
     }
   }
-  return finish(build(plc, options, stats, clock), plc, stats, clock);
+  return finish(build(plc, options, stats, clock), plc, options, stats, clock);
 }
 
 // One run on a checked PLC, perturbed by vertex id: (Steiner points or coplanar facets,) the
-// algorithm, neighbours, regions, validate().
+// algorithm, neighbours, regions, validate(). `delaunay`: the Delaunay tetrahedralization of plc's
+// points, when cdt() computed it beside the check.
 template <int D>
-Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock, Plc<D>* triangulated) {
+Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock, Plc<D>* triangulated,
+                     const detail::DelaunayMesh* delaunay = nullptr) {
   if constexpr (D == 3) {
     if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
       detail::RefinedPlc refined = detail::refine(plc, options);
@@ -141,14 +147,18 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       // Without Steiner points nothing was rounded: each facet was only re-triangulated by flips in
       // its own exact plane, which keeps it the same polygon, so the checked input stands for it.
       try {
-        if (!refined.steiner_on.empty()) check(refined.plc);
+        if (!refined.steiner_on.empty()) check(refined.plc, options.threads);
       } catch (const PlcError& e) {
         throw NoCdtError("Steiner points: rounding broke the refined PLC (" + e.problems().front().message +
                              ", in the refined PLC's numbering): two facets lie within rounding of each other there",
                          {});
       }
       stats.seconds_setup += clock.lap();
-      Triangulation<3> tri = triangulate(refined.plc, options, stats, clock);
+      // Without Steiner points the refined PLC has the input's points, and their tetrahedralization.
+      if (refined.delaunay) delaunay = &*refined.delaunay;
+      else if (!refined.steiner_on.empty()) delaunay = nullptr;
+      Triangulation<3> tri = triangulate(refined.plc, options, stats, clock, delaunay);
+      refined.delaunay.reset();
       tri.num_input_points = refined.num_input_points;
       tri.steiner_on = std::move(refined.steiner_on);
       if (options.remove_steiner_points && !tri.steiner_on.empty()) {
@@ -160,7 +170,7 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       return tri;
     }
   }
-  Triangulation<D> tri = triangulate(plc, options, stats, clock);
+  Triangulation<D> tri = triangulate(plc, options, stats, clock, delaunay);
   if (triangulated) *triangulated = plc;
   return tri;
 }
@@ -187,13 +197,13 @@ Triangulation<D> run_in_order(const Plc<D>& plc, const std::vector<uint32_t>& ra
 // and two pseudo-random ones. The first run's error is reported, in the caller's ids.
 template <int D>
 Triangulation<D> run_with_retries(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
-                                  Plc<D>* triangulated) {
+                                  Plc<D>* triangulated, const detail::DelaunayMesh* delaunay) {
   const auto ties = [] { return predicates::perturbation_ties_on_this_thread(); };
   uint64_t ties_before = ties();
   std::optional<NoCdtError> first;
   stats.perturbation_orders = 1;
   try {
-    return run(plc, options, stats, clock, triangulated);
+    return run(plc, options, stats, clock, triangulated, delaunay);
   } catch (const NoCdtError& e) {
     first = e;
   }
@@ -234,9 +244,25 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   stats = {};
   Stopwatch clock;
   stats.check_recorded = plc.checked && plc.checked->covers(plc);
-  check(plc);
+  // The cavity sweep's Delaunay tetrahedralization beside a full check, given a second thread (with
+  // Steiner points, refinement computes its own as it goes).
+  std::optional<detail::DelaunayInBackground> delaunay;
+  if constexpr (D == 3)
+    if (options.algorithm == Algorithm::CavitySweep && options.steiner == SteinerMode::None && !stats.check_recorded &&
+        detail::thread_count(options.threads) > 1)
+      delaunay.emplace(plc.points);
+  check(plc, options.threads);
   stats.seconds_check = clock.lap();
-  return run_with_retries(plc, options, stats, clock, triangulated);
+  const detail::DelaunayMesh* mesh = nullptr;
+  if (delaunay) {
+    bool cancelled = false;
+    mesh = delaunay->get([&](std::size_t inserted) {
+      cancelled = options.progress && !options.progress({"Delaunay", inserted, plc.num_points()});
+      return !cancelled;
+    });
+    if (cancelled) throw CancelledError();
+  }
+  return run_with_retries(plc, options, stats, clock, triangulated, mesh);
 }
 
 template <int D>
@@ -251,9 +277,9 @@ Triangulation<D> star_cdt(const Plc<D>& polytope, const std::array<double, D>& c
   stats = {};
   stats.perturbation_orders = 1;
   Stopwatch clock;
-  check(polytope);
+  check(polytope, options.threads);
   stats.seconds_check = clock.lap();
-  return finish(detail::star_sweep_cdt<D>(polytope, centre, options, stats), polytope, stats, clock);
+  return finish(detail::star_sweep_cdt<D>(polytope, centre, options, stats), polytope, options, stats, clock);
 }
 
 template Triangulation<2> star_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&);

@@ -19,4 +19,13 @@ struct TupleHash {
   }
 };
 
+// Equal tuples, element by element: std::array's == calls memcmp, a library call per comparison on
+// the hot paths of hashing and grouping facets.
+template <std::size_t N>
+inline bool same_tuple(const std::array<uint32_t, N>& a, const std::array<uint32_t, N>& b) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (a[i] != b[i]) return false;
+  return true;
+}
+
 }  // namespace sweepcdt::detail

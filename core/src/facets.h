@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "facet_hash.h"
 #include "sweepcdt/triangulation.h"
 
 namespace sweepcdt::detail {
@@ -45,8 +46,11 @@ std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri) {
       const FacetKey<D> key = facet_key<D>(tri.simplex(t), i);
       facets[fill[key[0]]++] = {key, t, static_cast<uint32_t>(i)};
     }
+  // Element by element (std::array's operators go through memcmp, a call per comparison here).
   const auto less = [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
-    return a.key != b.key ? a.key < b.key : a.simplex < b.simplex;
+    for (int i = 0; i < D; ++i)
+      if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    return a.simplex < b.simplex;
   };
   for (std::size_t v = 0; v < n; ++v) std::sort(facets.begin() + start[v], facets.begin() + start[v + 1], less);
   return facets;
@@ -57,7 +61,7 @@ template <int D, class Group>
 void for_each_facet_group(const std::vector<FacetEntry<D>>& facets, Group&& group) {
   for (std::size_t begin = 0; begin < facets.size();) {
     std::size_t end = begin + 1;
-    while (end < facets.size() && facets[end].key == facets[begin].key) ++end;
+    while (end < facets.size() && same_tuple(facets[end].key, facets[begin].key)) ++end;
     group(begin, end);
     begin = end;
   }

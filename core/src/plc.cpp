@@ -7,6 +7,7 @@
 #include <string>
 
 #include "box_tree.h"
+#include "parallel.h"
 #include "simplex_intersection.h"
 #include "sweepcdt/plc.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -22,7 +23,20 @@ class ProblemList {
     if (per_kind_[kind]++ < limit_) problems_.push_back({kind, std::move(elements), message});
   }
   uint64_t total() const { return total_; }
+  std::size_t limit() const { return limit_; }
   std::vector<PlcProblem> take() { return std::move(problems_); }
+
+  // Appends the problems `later` found after these (a later part of the same scan), as if one list
+  // had counted them all: still the first `limit` of each kind in scan order.
+  void append(ProblemList&& later) {
+    std::map<PlcProblemKind, std::size_t> kept;
+    for (PlcProblem& p : later.problems_) {
+      ++kept[p.kind];
+      if (per_kind_[p.kind]++ < limit_) problems_.push_back(std::move(p));
+    }
+    for (const auto& [kind, count] : later.per_kind_) per_kind_[kind] += count - kept[kind];
+    total_ += later.total_;
+  }
 
  private:
   std::size_t limit_;
@@ -143,22 +157,27 @@ std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems)
   return usable;
 }
 
+// Pairs of simplices whose boxes overlap, tested exactly; in parts on `threads` threads (parallel.h).
 template <int D>
-void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems) {
+void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems, unsigned threads) {
   std::vector<detail::Box<D>> boxes(plc.num_simplices());
   for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(simplex_coords(plc, j).data(), D);
   const detail::BoxTree<D> tree(boxes);
 
-  for (std::size_t j = 0; j < boxes.size(); ++j) {
-    if (!usable[j]) continue;
-    const auto a = simplex_coords(plc, j);
-    const auto ida = simplex_ids(plc, j);
-    tree.for_each_overlap(boxes[j], [&](uint32_t k) {
-      if (k <= j || !usable[k]) return;
-      if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
-        problems.add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
-    });
-  }
+  std::vector<ProblemList> found(detail::parts_for(boxes.size(), threads), ProblemList(problems.limit()));
+  detail::for_each_part(boxes.size(), threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) {
+      if (!usable[j]) continue;
+      const auto a = simplex_coords(plc, j);
+      const auto ida = simplex_ids(plc, j);
+      tree.for_each_overlap(boxes[j], [&](uint32_t k) {
+        if (k <= j || !usable[k]) return;
+        if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
+          found[part].add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
+      });
+    }
+  });
+  for (ProblemList& part : found) problems.append(std::move(part));
 
   // Points that are vertices of no simplex must not lie on one either.
   std::vector<char> used(plc.num_points(), 0);
@@ -190,12 +209,12 @@ bool PlcCheck<D>::covers(const Plc<D>& plc) const {
 
 template <int D>
 std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total,
-                                      std::shared_ptr<const PlcCheck<D>>* record) {
+                                      std::shared_ptr<const PlcCheck<D>>* record, unsigned threads) {
   ProblemList problems(limit_per_kind);
   if (check_structure(plc, problems) && !(plc.checked && plc.checked->covers(plc))) {
     check_duplicate_points(plc, problems);
     const auto usable = check_simplex_shapes(plc, problems);
-    check_intersections(plc, usable, problems);
+    check_intersections(plc, usable, problems, threads);
   }
   if (total) *total = problems.total();
   if (record) {
@@ -206,9 +225,9 @@ std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_k
 }
 
 template <int D>
-void check(const Plc<D>& plc) {
+void check(const Plc<D>& plc, unsigned threads) {
   uint64_t total = 0;
-  auto problems = find_problems(plc, 10, &total);
+  auto problems = find_problems(plc, 10, &total, static_cast<std::shared_ptr<const PlcCheck<D>>*>(nullptr), threads);
   if (total > 0) throw PlcError(std::move(problems), total);
 }
 
@@ -216,8 +235,8 @@ void check(const Plc<D>& plc) {
   template struct Plc<D>;                                                                          \
   template class PlcCheck<D>;                                                                      \
   template std::vector<PlcProblem> find_problems<D>(const Plc<D>&, std::size_t, uint64_t*,        \
-                                                    std::shared_ptr<const PlcCheck<D>>*);          \
-  template void check<D>(const Plc<D>&);
+                                                    std::shared_ptr<const PlcCheck<D>>*, unsigned); \
+  template void check<D>(const Plc<D>&, unsigned);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)

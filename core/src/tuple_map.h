@@ -23,7 +23,7 @@ class TupleMap {
   uint32_t find(const Key& key) const {
     for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
       if (values_[i] == kAbsent) return kAbsent;
-      if (keys_[i] == key) return values_[i];
+      if (same_tuple(keys_[i], key)) return values_[i];
     }
   }
 
@@ -37,7 +37,7 @@ class TupleMap {
         ++size_;
         return {value, true};
       }
-      if (keys_[i] == key) return {values_[i], false};
+      if (same_tuple(keys_[i], key)) return {values_[i], false};
     }
   }
 

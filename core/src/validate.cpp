@@ -8,6 +8,7 @@
 #include <string>
 
 #include "box_tree.h"
+#include "parallel.h"
 #include "facets.h"
 #include "simplex_intersection.h"
 #include "sweepcdt/predicates/exact_sum.h"
@@ -26,7 +27,7 @@ std::string n(uint64_t i) { return std::to_string(i); }
 template <int D>
 class Validator {
  public:
-  Validator(const Triangulation<D>& tri, const Plc<D>& plc) : tri_(tri), plc_(plc) {}
+  Validator(const Triangulation<D>& tri, const Plc<D>& plc, unsigned threads) : tri_(tri), plc_(plc), threads_(threads) {}
 
   ValidationReport run(ValidationLevel level) {
     if (!shapes() || !simplex_ids()) return std::move(report_);
@@ -51,8 +52,28 @@ class Validator {
     uint32_t constraint = kNone;  // the constraining simplex this facet lies in
   };
 
-  void fail(const std::string& check, const std::string& detail) {
-    if (report_.counts[check]++ < kReportedPerCheck) report_.failures.push_back({check, detail});
+  void fail(const std::string& check, const std::string& detail) { fail_in(report_, check, detail); }
+  static void fail_in(ValidationReport& report, const std::string& check, const std::string& detail) {
+    if (report.counts[check]++ < kReportedPerCheck) report.failures.push_back({check, detail});
+  }
+
+  // test(i, fail) for every i in [0, n), in parts on threads_ (parallel.h); the failures are reported
+  // as one pass in order would report them.
+  template <class Test>
+  void in_parts(std::size_t n, Test&& test) {
+    std::vector<ValidationReport> parts(detail::parts_for(n, threads_));
+    detail::for_each_part(n, threads_, [&](std::size_t part, std::size_t begin, std::size_t end) {
+      const auto fail_here = [&](const std::string& check, const std::string& what) { fail_in(parts[part], check, what); };
+      for (std::size_t i = begin; i < end; ++i) test(i, fail_here);
+    });
+    for (ValidationReport& part : parts) {
+      std::map<std::string, std::size_t> kept;
+      for (auto& f : part.failures) {
+        ++kept[f.check];
+        if (report_.counts[f.check]++ < kReportedPerCheck) report_.failures.push_back(std::move(f));
+      }
+      for (const auto& [check, count] : part.counts) report_.counts[check] += count - kept[check];
+    }
   }
 
   predicates::Coords<D + 1> coords(uint32_t t) const {
@@ -119,9 +140,11 @@ class Validator {
   }
 
   void orientation() {
-    for (uint32_t t = 0; t < tri_.num_simplices(); ++t)
+    in_parts(tri_.num_simplices(), [&](std::size_t i, const auto& fail_here) {
+      const uint32_t t = static_cast<uint32_t>(i);
       if (predicates::orient<D>(coords(t)) != Sign::Positive)
-        fail("orientation", simplex_text(t) + " is not positively oriented (inverted or flat)");
+        fail_here("orientation", simplex_text(t) + " is not positively oriented (inverted or flat)");
+    });
   }
 
   void group_facets() {
@@ -148,13 +171,14 @@ class Validator {
   }
 
   void interior_facet_sides() {
-    for (const Group& g : groups_) {
-      if (g.end - g.begin != 2) continue;
+    in_parts(groups_.size(), [&](std::size_t i, const auto& fail_here) {
+      const Group& g = groups_[i];
+      if (g.end - g.begin != 2) return;
       const auto& a = facets_[g.begin];
       const auto& b = facets_[g.begin + 1];
       if (orient_replaced(a.simplex, a.local, tri_.point(apex(b))) != Sign::Negative)
-        fail("interior-facet-sides", facet_text(g) + ": simplices " + n(a.simplex) + " and " + n(b.simplex) + " are not on opposite sides");
-    }
+        fail_here("interior-facet-sides", facet_text(g) + ": simplices " + n(a.simplex) + " and " + n(b.simplex) + " are not on opposite sides");
+    });
   }
 
   // Steiner points must lie on the constraining simplex recorded for them.
@@ -404,17 +428,18 @@ class Validator {
   // Paper §1/§6: with the constraints present, a triangulation whose unconstrained interior facets
   // are all locally Delaunay (perturbed) is the CDT.
   void locally_delaunay() {
-    for (const Group& g : groups_) {
-      if (g.end - g.begin != 2 || g.constraint != kNone) continue;
+    in_parts(groups_.size(), [&](std::size_t i, const auto& fail_here) {
+      const Group& g = groups_[i];
+      if (g.end - g.begin != 2 || g.constraint != kNone) return;
       const auto& a = facets_[g.begin];
       const auto& b = facets_[g.begin + 1];
       predicates::Vertices<D + 1> s;
-      for (int i = 0; i <= D; ++i) s[i] = perturbed(tri_.simplex(a.simplex)[i]);
+      for (int k = 0; k <= D; ++k) s[k] = perturbed(tri_.simplex(a.simplex)[k]);
       const uint32_t q = apex(b);
       if (predicates::inside_circumsphere<D>(s, perturbed(q)))
-        fail("locally-delaunay", facet_text(g) + " is not locally Delaunay: point " + n(q) + " is inside the circumsphere of " +
-                                     simplex_text(a.simplex));
-    }
+        fail_here("locally-delaunay", facet_text(g) + " is not locally Delaunay: point " + n(q) + " is inside the circumsphere of " +
+                                          simplex_text(a.simplex));
+    });
   }
 
   const Triangulation<D>& tri_;
@@ -422,6 +447,7 @@ class Validator {
   ValidationReport report_;
   std::vector<detail::FacetEntry<D>> facets_;
   std::vector<Group> groups_;
+  unsigned threads_;
 };
 
 }  // namespace
@@ -435,13 +461,13 @@ std::string ValidationReport::summary() const {
 }
 
 template <int D>
-ValidationReport validate(const Triangulation<D>& tri, const Plc<D>& plc, ValidationLevel level) {
-  return Validator<D>(tri, plc).run(level);
+ValidationReport validate(const Triangulation<D>& tri, const Plc<D>& plc, ValidationLevel level, unsigned threads) {
+  return Validator<D>(tri, plc, threads).run(level);
 }
 
-template ValidationReport validate<2>(const Triangulation<2>&, const Plc<2>&, ValidationLevel);
-template ValidationReport validate<3>(const Triangulation<3>&, const Plc<3>&, ValidationLevel);
-template ValidationReport validate<4>(const Triangulation<4>&, const Plc<4>&, ValidationLevel);
-template ValidationReport validate<5>(const Triangulation<5>&, const Plc<5>&, ValidationLevel);
+template ValidationReport validate<2>(const Triangulation<2>&, const Plc<2>&, ValidationLevel, unsigned);
+template ValidationReport validate<3>(const Triangulation<3>&, const Plc<3>&, ValidationLevel, unsigned);
+template ValidationReport validate<4>(const Triangulation<4>&, const Plc<4>&, ValidationLevel, unsigned);
+template ValidationReport validate<5>(const Triangulation<5>&, const Plc<5>&, ValidationLevel, unsigned);
 
 }  // namespace sweepcdt

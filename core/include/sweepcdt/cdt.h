@@ -128,6 +128,9 @@ struct Options {
   // every segment that is not Delaunay, far more than a CDT needs.
   bool remove_steiner_points = true;
   CdtStatistics* statistics = nullptr;  // filled in when set
+  // Threads for the work that runs in parallel — the PLC check, validate(), the cavity sweep's
+  // Delaunay tetrahedra tests — 0: every hardware thread. The result is the same for any number.
+  unsigned threads = 0;
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;
 };

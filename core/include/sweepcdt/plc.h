@@ -78,7 +78,7 @@ class PlcCheck {
 
  private:
   template <int E>
-  friend std::vector<PlcProblem> find_problems(const Plc<E>&, std::size_t, uint64_t*, std::shared_ptr<const PlcCheck<E>>*);
+  friend std::vector<PlcProblem> find_problems(const Plc<E>&, std::size_t, uint64_t*, std::shared_ptr<const PlcCheck<E>>*, unsigned);
   PlcCheck(std::vector<double> points, std::vector<uint32_t> simplices)
       : points_(std::move(points)), simplices_(std::move(simplices)) {}
   std::vector<double> points_;
@@ -88,12 +88,15 @@ class PlcCheck {
 // Every problem of the PLC, up to `limit_per_kind` reported per kind (all are counted). Exact: no
 // tolerance anywhere. Intersections are found with a bounding-box tree, in O(m log m) for surfaces.
 // When there is no problem and `record` is given, *record is set to a PlcCheck of this PLC (else reset).
+// `threads`: how many threads test intersections (0: every hardware thread); the answer, down to the
+// order of the problems, is the same for any number.
 template <int D>
 std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind = 10,
-                                      uint64_t* total = nullptr, std::shared_ptr<const PlcCheck<D>>* record = nullptr);
+                                      uint64_t* total = nullptr, std::shared_ptr<const PlcCheck<D>>* record = nullptr,
+                                      unsigned threads = 0);
 
 // Throws PlcError listing the problems if there are any.
 template <int D>
-void check(const Plc<D>& plc);
+void check(const Plc<D>& plc, unsigned threads = 0);
 
 }  // namespace sweepcdt

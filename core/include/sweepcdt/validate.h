@@ -50,8 +50,10 @@ struct ValidationReport {
   std::string summary() const;  // one line per failure, then totals
 };
 
+// `threads`: how many threads run the per-simplex and per-facet tests (0: every hardware thread); the
+// report is the same for any number.
 template <int D>
 ValidationReport validate(const Triangulation<D>& tri, const Plc<D>& plc,
-                          ValidationLevel level = ValidationLevel::Full);
+                          ValidationLevel level = ValidationLevel::Full, unsigned threads = 0);
 
 }  // namespace sweepcdt

@@ -13,6 +13,7 @@ thread_local uint64_t t_ties = 0;
 
 void detail::count_tie() { ++t_ties; }
 uint64_t perturbation_ties_on_this_thread() { return t_ties; }
+void add_perturbation_ties_on_this_thread(uint64_t ties) { t_ties += ties; }
 
 #ifdef SWEEPCDT_PREDICATE_STATS
 namespace {

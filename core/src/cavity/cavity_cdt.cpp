@@ -61,18 +61,23 @@ Triangulation<3> assemble(const Plc<3>& plc, const DelaunayMesh& dt, const std::
 
 }  // namespace
 
-std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats) {
+std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats,
+                                           const DelaunayMesh* delaunay) {
   const std::size_t n = plc.num_points();
-  DelaunayMesh dt;
-  try {
-    dt = delaunay_mesh(plc.points, [&](std::size_t inserted) {
-      if (options.progress && !options.progress({"Delaunay", inserted, n})) throw CancelledError();
-    });
-  } catch (const CancelledError&) {
-    throw;
-  } catch (const Error&) {
-    return std::nullopt;  // e.g. all points in one plane
+  DelaunayMesh computed;
+  if (!delaunay) {
+    try {
+      computed = delaunay_mesh(plc.points, [&](std::size_t inserted) {
+        if (options.progress && !options.progress({"Delaunay", inserted, n})) throw CancelledError();
+      });
+    } catch (const CancelledError&) {
+      throw;
+    } catch (const Error&) {
+      return std::nullopt;  // e.g. all points in one plane
+    }
+    delaunay = &computed;
   }
+  const DelaunayMesh& dt = *delaunay;
   const ConstraintFaces constraints = constraint_faces(plc, dt);
   stats.missing_constraints = constraints.missing.size();
   const Disturbed disturbed = disturbed_tetrahedra(plc, dt, constraints.missing);

@@ -21,6 +21,7 @@
 #pragma once
 #include <optional>
 
+#include "../steiner/delaunay3.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
@@ -30,7 +31,10 @@ namespace sweepcdt::detail {
 // whose cavities reach the hull (cavity_plc.h), no CDT found in a cavity (then the PLC has none, and
 // the whole sweep says so with its witness), or anything it did not expect. The caller then sweeps
 // the whole PLC. Throws CancelledError.
-std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats);
+// `delaunay`: the Delaunay tetrahedralization of plc.points when the caller has it (Steiner refinement
+// keeps one), else it is computed.
+std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats,
+                                           const DelaunayMesh* delaunay = nullptr);
 
 
 }  // namespace sweepcdt::detail

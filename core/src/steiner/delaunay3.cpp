@@ -535,6 +535,8 @@ void DelaunayEdges::insert_new_points() {
 
 bool DelaunayEdges::has_edge(uint32_t a, uint32_t b) { return impl_->triangulation.has_edge(a, b); }
 
+DelaunayMesh DelaunayEdges::mesh() const { return impl_->triangulation.mesh(); }
+
 bool DelaunayEdges::may_have_changed(uint32_t a, uint32_t b) const {
   const Delaunay3& t = impl_->triangulation;
   return (t.touched(a) && t.touched(b)) || t.inserted_last(a) || t.inserted_last(b);

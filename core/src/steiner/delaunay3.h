@@ -58,6 +58,8 @@ class DelaunayEdges {
   // False when ab is an edge exactly when it was before the last insert_new_points: neither end is
   // new and some end lost no tetrahedron (every new edge has a new end). All true after construction.
   bool may_have_changed(uint32_t a, uint32_t b) const;
+  // The triangulation as it is (points inserted so far) with its adjacency.
+  DelaunayMesh mesh() const;
 
  private:
   struct Impl;

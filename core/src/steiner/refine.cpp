@@ -77,7 +77,10 @@ class Refiner {
         }
       }
       if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
-      if (split.empty() && inside == 0) return;
+      if (split.empty() && inside == 0) {
+        r_.delaunay = delaunay.mesh();
+        return;
+      }
       if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
         throw NoCdtError("Steiner points: " + std::to_string(split.size() + inside) + " segments or folds still not Delaunay after " +
                              std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +

@@ -35,8 +35,10 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "delaunay3.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
@@ -50,6 +52,9 @@ struct RefinedPlc {
   std::vector<std::array<uint32_t, 2>> made_from;  // per Steiner point: the two points it splits
                                                    // (`sweepcdt check` recognises it by them)
   uint64_t rounds = 0, facets = 0, flips = 0;
+  // The Delaunay tetrahedralization of plc.points that refinement kept (SteinerMode::Auto), which
+  // the cavity sweep starts from (cavity/cavity_cdt.h) instead of computing it again.
+  std::optional<DelaunayMesh> delaunay;
 };
 
 // With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar).

@@ -25,5 +25,7 @@ void reset_predicate_stats();
 // another perturbation order (paper §6). Per thread, so that files meshed concurrently do not see
 // each other's ties; cdt() runs on its caller's thread.
 uint64_t perturbation_ties_on_this_thread();
+// Credits ties that helper threads counted for work done on behalf of this one (core/src/parallel.h).
+void add_perturbation_ties_on_this_thread(uint64_t ties);
 
 }  // namespace sweepcdt::predicates

@@ -1,0 +1,68 @@
+// Internal: deterministic data parallelism for the exact checks (the PLC check, validate()) and the
+// cavity sweep's per-tetrahedron work. [0, n) is cut into contiguous parts, one per thread; each part
+// writes only its own result, and the caller combines the results in part order — so the answer,
+// down to the order of reported problems, is the same for any number of threads. Ties the helper
+// threads' predicates decide by the perturbation are credited to the calling thread (cdt() reads
+// that count to decide whether another perturbation order may help, paper §6).
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "sweepcdt/predicates/stats.h"
+
+namespace sweepcdt::detail {
+
+// `requested` threads, or the hardware's when 0.
+inline unsigned thread_count(unsigned requested) {
+  if (requested) return requested;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Work below this many items a part is not worth a thread.
+inline constexpr std::size_t kItemsPerThread = 4096;
+
+// The number of parts for_each_part() cuts n items into.
+inline std::size_t parts_for(std::size_t n, unsigned threads) {
+  return std::max<std::size_t>(1, std::min<std::size_t>(thread_count(threads), n / kItemsPerThread));
+}
+
+// body(part, begin, end) for each of parts_for(n, threads) contiguous parts of [0, n); the calling
+// thread runs part 0. The first exception of a part (in part order) is rethrown once all are done.
+template <class Body>
+void for_each_part(std::size_t n, unsigned threads, Body&& body) {
+  const std::size_t parts = parts_for(n, threads);
+  const auto range = [&](std::size_t part) { return std::pair{n * part / parts, n * (part + 1) / parts}; };
+  if (parts == 1) {
+    body(std::size_t{0}, std::size_t{0}, n);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(parts);
+  std::vector<uint64_t> ties(parts, 0);
+  std::vector<std::thread> workers;
+  for (std::size_t part = 1; part < parts; ++part)
+    workers.emplace_back([&, part] {
+      const uint64_t before = predicates::perturbation_ties_on_this_thread();
+      try {
+        const auto [begin, end] = range(part);
+        body(part, begin, end);
+      } catch (...) {
+        errors[part] = std::current_exception();
+      }
+      ties[part] = predicates::perturbation_ties_on_this_thread() - before;
+    });
+  try {
+    const auto [begin, end] = range(0);
+    body(std::size_t{0}, begin, end);
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (std::thread& w : workers) w.join();
+  for (const uint64_t t : ties) predicates::add_perturbation_ties_on_this_thread(t);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace sweepcdt::detail
