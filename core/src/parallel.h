@@ -15,10 +15,12 @@
 
 namespace sweepcdt::detail {
 
-// `requested` threads, or the hardware's when 0.
+// `requested` threads, or the hardware's when 0. (Asked once: glibc reads a /sys file each time, and
+// the deletion pass validates tens of thousands of small cavities.)
 inline unsigned thread_count(unsigned requested) {
   if (requested) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
+  static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  return hardware;
 }
 
 // Work below this many items a part is not worth a thread.
@@ -26,6 +28,7 @@ inline constexpr std::size_t kItemsPerThread = 4096;
 
 // The number of parts for_each_part() cuts n items into.
 inline std::size_t parts_for(std::size_t n, unsigned threads) {
+  if (n < 2 * kItemsPerThread) return 1;
   return std::max<std::size_t>(1, std::min<std::size_t>(thread_count(threads), n / kItemsPerThread));
 }
 

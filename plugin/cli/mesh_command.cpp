@@ -178,6 +178,8 @@ int run_mesh(const std::vector<std::string>& words, std::ostream& out, std::ostr
   std::vector<char> started(n, 0);
   std::atomic<std::size_t> next{0};
   const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(req.threads, n));
+  // Files converted at once share the cores: each computation gets its part of them.
+  if (threads > 1) req.options.core_threads = std::max(1u, std::thread::hardware_concurrency() / threads);
   const auto work = [&] {
     for (std::size_t i; (i = next++) < n && !interrupted();) {
       started[i] = 1;

@@ -13,6 +13,7 @@ Options core_options(const RunOptions& options, CdtStatistics* statistics, std::
   o.steiner = options.steiner;
   o.facets = options.facets;
   o.remove_steiner_points = !options.keep_steiner;
+  o.threads = options.core_threads;
   o.statistics = statistics;
   o.progress = std::move(progress);
   return o;

@@ -19,6 +19,7 @@ struct RunOptions {
   bool check = false;      // --check: validate the result again before writing it
   std::string stats_file;  // --stats FILE.json
   bool quiet = false;      // --quiet: errors only
+  unsigned core_threads = 0;  // threads inside one computation (Options::threads): the cores a batch leaves per file
 };
 
 const char* to_string(SteinerMode mode);  // "auto", "none"

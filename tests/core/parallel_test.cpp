@@ -1,0 +1,127 @@
+// The parallel parts (core/src/parallel.h) give the answer one thread gives: the PLC check's
+// problems, validate()'s failures (in the same order, the same counts), the perturbation ties counted
+// on the caller's thread, and cdt()'s triangulation. The inputs are big enough to be cut into parts
+// (parallel.h: kItemsPerThread items a part), which each test checks first.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "parallel.h"
+#include "steiner/delaunay3.h"
+#include "sweepcdt/cdt.h"
+#include "sweepcdt/predicates/stats.h"
+#include "test_shapes.h"
+#include "triangulation_util.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+constexpr unsigned kMany = 4;  // threads: more than this machine has is fine, the parts are the point
+
+// A comb with many teeth: a facet-bounded surface of a few thousand triangles.
+Plc<3> comb(int teeth) {
+  std::vector<double> xs{0}, tops;
+  for (int i = 0; i < teeth; ++i) {
+    xs.push_back(xs.back() + 1);
+    tops.push_back(1 + (i % 7) * 0.37);
+  }
+  return fixtures::extruded_columns(xs, tops, 3);
+}
+
+// `copies` copies of `plc`, each shifted by `step` along x: overlapping bodies when step is small.
+Plc<3> copies_of(const Plc<3>& plc, int copies, double step) {
+  Plc<3> all;
+  for (int c = 0; c < copies; ++c) {
+    const uint32_t base = static_cast<uint32_t>(all.num_points());
+    for (std::size_t i = 0; i < plc.num_points(); ++i)
+      all.points.insert(all.points.end(), {plc.point(i)[0] + c * step, plc.point(i)[1], plc.point(i)[2]});
+    for (const uint32_t v : plc.simplices) all.simplices.push_back(base + v);
+    all.exterior.insert(all.exterior.end(), plc.exterior.begin(), plc.exterior.end());
+  }
+  return all;
+}
+
+TEST(Parallel, PlcCheckFindsTheSameProblemsInTheSameOrder) {
+  const Plc<3> overlapping = copies_of(comb(400), 3, 0.5);  // intersecting everywhere
+  ASSERT_GT(detail::parts_for(overlapping.num_simplices(), kMany), 1u);
+  uint64_t total_one = 0, total_many = 0;
+  const auto one = find_problems<3>(overlapping, 10, &total_one, nullptr, 1);
+  const auto many = find_problems<3>(overlapping, 10, &total_many, nullptr, kMany);
+  EXPECT_GT(total_one, 1000u);
+  EXPECT_EQ(total_many, total_one);
+  ASSERT_EQ(many.size(), one.size());
+  for (std::size_t k = 0; k < one.size(); ++k) EXPECT_EQ(many[k].message, one[k].message);
+  EXPECT_TRUE(find_problems<3>(comb(400), 10, nullptr, nullptr, kMany).empty());
+}
+
+TEST(Parallel, ValidateReportsTheSameFailuresAndTies) {
+  // A grid of points: cospherical ties everywhere, so the perturbation decides many local tests.
+  Plc<3> grid;
+  for (int x = 0; x < 16; ++x)
+    for (int y = 0; y < 16; ++y)
+      for (int z = 0; z < 16; ++z) grid.points.insert(grid.points.end(), {double(x), double(y), double(z)});
+  Triangulation<3> tri = cdt(grid);
+  ASSERT_GT(detail::parts_for(tri.num_simplices(), kMany), 1u);
+  const auto ties = [&](unsigned threads) {
+    const uint64_t before = predicates::perturbation_ties_on_this_thread();
+    EXPECT_TRUE(validate(tri, grid, ValidationLevel::Full, threads).ok());
+    return predicates::perturbation_ties_on_this_thread() - before;
+  };
+  const uint64_t ties_one = ties(1);
+  EXPECT_GT(ties_one, 0u);
+  EXPECT_EQ(ties(kMany), ties_one);
+
+  // Break it: every 97th simplex turned inside out, which the orientation, facet-side and local
+  // Delaunay tests all report, far more often than the 10 failures a check lists.
+  for (std::size_t t = 0; t < tri.num_simplices(); t += 97) std::swap(tri.simplices[4 * t], tri.simplices[4 * t + 1]);
+  const ValidationReport one = validate(tri, grid, ValidationLevel::Full, 1);
+  const ValidationReport many = validate(tri, grid, ValidationLevel::Full, kMany);
+  EXPECT_GT(one.count("orientation"), 10u);
+  EXPECT_EQ(many.counts, one.counts);
+  ASSERT_EQ(many.failures.size(), one.failures.size());
+  for (std::size_t k = 0; k < one.failures.size(); ++k) {
+    EXPECT_EQ(many.failures[k].check, one.failures[k].check);
+    EXPECT_EQ(many.failures[k].detail, one.failures[k].detail);
+  }
+}
+
+// cdt() with one thread and with several: the same simplices, for the cavity sweep (whose Delaunay
+// tetrahedralization runs beside the check when there is a second thread) and the sweep; the comb
+// with the converter's options (it needs Steiner points), the deletion pass off to keep it short.
+TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  Plc<3> points;
+  for (int i = 0; i < 3 * 6000; ++i) points.points.push_back(u(rng));
+  for (const auto& [what, plc] : {std::pair{"random points", points}, std::pair{"comb", comb(600)}}) {
+    for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere}) {
+      Options one = std::string(what) == "comb" ? mesh_defaults() : Options{};
+      one.remove_steiner_points = false;
+      Options many = one;
+      one.algorithm = many.algorithm = algorithm;
+      one.threads = 1;
+      many.threads = kMany;
+      CdtStatistics stats;
+      many.statistics = &stats;
+      const Triangulation<3> a = cdt(plc, one), b = cdt(plc, many);
+      EXPECT_EQ(fixtures::simplex_set(b), fixtures::simplex_set(a)) << what << " " << to_string(algorithm);
+      EXPECT_EQ(b.regions.size(), a.regions.size());
+      EXPECT_EQ(stats.algorithm, algorithm) << what;
+    }
+  }
+}
+
+// A part that throws: the error reaches the caller after every part ended.
+TEST(Parallel, AnExceptionInAPartReachesTheCaller) {
+  std::vector<int> done(4 * detail::kItemsPerThread, 0);
+  EXPECT_THROW(detail::for_each_part(done.size(), kMany,
+                                     [&](std::size_t part, std::size_t begin, std::size_t end) {
+                                       for (std::size_t i = begin; i < end; ++i) done[i] = 1;
+                                       if (part == 2) throw std::runtime_error("part 2");
+                                     }),
+               std::runtime_error);
+  EXPECT_EQ(std::count(done.begin(), done.end(), 1), static_cast<long>(done.size()));
+}
+
+}  // namespace
