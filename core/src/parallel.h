@@ -1,5 +1,4 @@
-// Internal: deterministic data parallelism for the exact checks (the PLC check, validate()) and the
-// cavity sweep's per-tetrahedron work. [0, n) is cut into contiguous parts, one per thread; each part
+// Internal: deterministic data parallelism for the exact checks (the PLC check, validate()). [0, n) is cut into contiguous parts, one per thread; each part
 // writes only its own result, and the caller combines the results in part order — so the answer,
 // down to the order of reported problems, is the same for any number of threads. Ties the helper
 // threads' predicates decide by the perturbation are credited to the calling thread (cdt() reads
@@ -8,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <map>
 #include <thread>
 #include <vector>
 
@@ -66,6 +66,21 @@ void for_each_part(std::size_t n, unsigned threads, Body&& body) {
   for (const uint64_t t : ties) predicates::add_perturbation_ties_on_this_thread(t);
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// Appends what a later part found to what the earlier parts found, as one scan in order would have
+// listed it: `items` keeps the first `limit` of each kind, `counts` counts them all. `kind_of(item)`
+// names an item's kind. Both the PLC check's problems and validate()'s failures are merged so.
+template <class Item, class Kind, class KindOf>
+void append_part(std::vector<Item>& items, std::map<Kind, std::size_t>& counts, std::vector<Item>&& later_items,
+                 const std::map<Kind, std::size_t>& later_counts, std::size_t limit, KindOf&& kind_of) {
+  std::map<Kind, std::size_t> kept;  // of later_counts, those listed in later_items
+  for (Item& item : later_items) {
+    const Kind kind = kind_of(item);
+    ++kept[kind];
+    if (counts[kind]++ < limit) items.push_back(std::move(item));
+  }
+  for (const auto& [kind, count] : later_counts) counts[kind] += count - kept[kind];
 }
 
 }  // namespace sweepcdt::detail

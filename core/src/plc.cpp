@@ -29,12 +29,8 @@ class ProblemList {
   // Appends the problems `later` found after these (a later part of the same scan), as if one list
   // had counted them all: still the first `limit` of each kind in scan order.
   void append(ProblemList&& later) {
-    std::map<PlcProblemKind, std::size_t> kept;
-    for (PlcProblem& p : later.problems_) {
-      ++kept[p.kind];
-      if (per_kind_[p.kind]++ < limit_) problems_.push_back(std::move(p));
-    }
-    for (const auto& [kind, count] : later.per_kind_) per_kind_[kind] += count - kept[kind];
+    detail::append_part(problems_, per_kind_, std::move(later.problems_), later.per_kind_, limit_,
+                        [](const PlcProblem& p) { return p.kind; });
     total_ += later.total_;
   }
 

@@ -66,14 +66,9 @@ class Validator {
       const auto fail_here = [&](const std::string& check, const std::string& what) { fail_in(parts[part], check, what); };
       for (std::size_t i = begin; i < end; ++i) test(i, fail_here);
     });
-    for (ValidationReport& part : parts) {
-      std::map<std::string, std::size_t> kept;
-      for (auto& f : part.failures) {
-        ++kept[f.check];
-        if (report_.counts[f.check]++ < kReportedPerCheck) report_.failures.push_back(std::move(f));
-      }
-      for (const auto& [check, count] : part.counts) report_.counts[check] += count - kept[check];
-    }
+    for (ValidationReport& part : parts)
+      detail::append_part(report_.failures, report_.counts, std::move(part.failures), part.counts, kReportedPerCheck,
+                          [](const ValidationReport::Failure& f) { return f.check; });
   }
 
   predicates::Coords<D + 1> coords(uint32_t t) const {

@@ -61,6 +61,8 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
     j["queue_pops"] = r.cdt.queue_pops;
     j["stale_pops"] = r.cdt.stale_pops;
     j["drop_moves"] = r.cdt.drop_moves;
+    j["missing_constraints"] = r.cdt.missing_constraints;  // cavity sweep: constraints no Delaunay face
+    j["cavity_tetrahedra"] = r.cdt.cavity_tetrahedra;      // cavity sweep: Delaunay tetrahedra swept again
     j["perturbation_order"] = r.cdt.perturbation_order;  // paper §6: 0 = vertex ids (sweepcdt/perturbation_order.h)
     j["validated"] = r.validated;
     j["check_recorded"] = r.cdt.check_recorded;  // cdt() reused the importer's intersection check

@@ -239,6 +239,15 @@ TEST(CliMesh, StatsAreJsonWithCountsAndTimes) {
   EXPECT_GE(f["seconds"]["total"].get<double>(), f["seconds"]["build"].get<double>());
   EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"ico.inp", "stats.json"}));  // no temporary left
 
+  // The default, the cavity sweep, says what it did: a convex polyhedron's faces are faces of its
+  // convex hull, so all are Delaunay faces and nothing is swept again.
+  const CliRun cavity = run(quoted(input) + " -o " + quoted(out) + " --stats " + quoted(stats_file), dir);
+  ASSERT_EQ(cavity.exit_code, 0) << cavity.out;
+  const auto cavity_file = nlohmann::json::parse(bytes_of(stats_file))["files"][0];
+  EXPECT_EQ(cavity_file["algorithm"], "cavity-sweep");
+  EXPECT_EQ(cavity_file["missing_constraints"], 0);
+  EXPECT_EQ(cavity_file["cavity_tetrahedra"], 0);
+
   // A failure is recorded too, with its status and message.
   const auto bad = dir.write("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   const CliRun failed = run(quoted(bad) + " -o " + quoted(dir.path() / "open.mesh") + " --stats " + quoted(stats_file), dir);

@@ -35,9 +35,10 @@ enum class Algorithm {
   SweepPlane,   // paper §3: SWEEPCDT with a sweep plane; facet-bounded domains (a convex hull
                 // domain is swept with the sphere instead, and the statistics say so)
   GiftWrap,     // paper §2: O(n_v n_f n_s); the reference the sweeps are tested against
-  CavitySweep,  // D = 3 (the default): the Delaunay tetrahedralization, its tetrahedra that cross a
-                // constraint triangulated again by the sweep plane, in cavities (core/src/cavity/
-                // cavity_cdt.h); the sweep sphere when that cannot decide, and for D != 3
+  CavitySweep,  // D = 3 (the default): the Delaunay tetrahedralization, its tetrahedra that a
+                // constraint meets other than in a common face triangulated again by the sweep
+                // sphere, cavity by cavity (core/src/cavity/cavity_cdt.h); the whole PLC swept with
+                // the sphere when that cannot decide, and for D != 3
 };
 
 const char* to_string(Algorithm algorithm);
@@ -128,8 +129,9 @@ struct Options {
   // every segment that is not Delaunay, far more than a CDT needs.
   bool remove_steiner_points = true;
   CdtStatistics* statistics = nullptr;  // filled in when set
-  // Threads for the work that runs in parallel — the PLC check, validate(), the cavity sweep's
-  // Delaunay tetrahedra tests — 0: every hardware thread. The result is the same for any number.
+  // Threads for the work that runs in parallel — the PLC check's intersection tests, validate()'s
+  // per-simplex and per-facet tests, and (CavitySweep) the Delaunay tetrahedralization beside the
+  // check — 0: every hardware thread. The result is the same for any number.
   unsigned threads = 0;
   // Called now and then; return false to cancel (cdt() then throws CancelledError).
   std::function<bool(const Progress&)> progress;

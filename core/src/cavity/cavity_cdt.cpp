@@ -1,11 +1,9 @@
 #include "cavity_cdt.h"
 
-#include <algorithm>
-#include <array>
-
-#include "../tuple_map.h"
+#include "../facets.h"
 #include "../gift_wrap.h"
 #include "../sweep/sweep_cdt.h"
+#include "../tuple_map.h"
 #include "cavity_plc.h"
 #include "disturbed.h"
 #include "domain_sides.h"
@@ -27,11 +25,7 @@ Triangulation<3> assemble(const Plc<3>& plc, const DelaunayMesh& dt, const std::
   tri.neighbors.reserve(tri.simplices.capacity());
   TupleMap<3> open(cavity_simplices.size());  // facet -> 4 * simplex + local index, its first side seen
   const auto pair = [&](const uint32_t* simplex, uint32_t s, int i) {
-    std::array<uint32_t, 3> key;
-    for (int k = 0, r = 0; k < 4; ++k)
-      if (k != i) key[r++] = simplex[k];
-    std::sort(key.begin(), key.end());
-    const auto [other, first] = open.emplace(key, 4 * s + static_cast<uint32_t>(i));
+    const auto [other, first] = open.emplace(facet_key<3>(simplex, i), 4 * s + static_cast<uint32_t>(i));
     if (first) return;
     tri.neighbors[4 * s + i] = other;
     tri.neighbors[other] = 4 * s + static_cast<uint32_t>(i);

@@ -7,7 +7,7 @@
 //      constraint, from the hull and from the constraints' exterior notations (domain_sides.h);
 //   4. the rest of the domain — the cavities — as a PLC of its own: the facets between kept and
 //      cavity tetrahedra notated with the kept side exterior, and the constraints in the cavities
-//      (cavity_plc.h); its CDT by the sweep plane (§3);
+//      (cavity_plc.h), one per cavity; their CDTs by the sweep sphere (§3);
 //   5. the kept tetrahedra and the cavities' together.
 // Why that is the CDT, when the PLC has one: a kept tetrahedron has an empty (perturbed) circumsphere
 // and meets the constraints only in common faces, so it is constrained Delaunay, and under the
@@ -35,6 +35,5 @@ namespace sweepcdt::detail {
 // keeps one), else it is computed.
 std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats,
                                            const DelaunayMesh* delaunay = nullptr);
-
 
 }  // namespace sweepcdt::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "../facets.h"
 #include "../simplex_interior.h"
 #include "../simplex_intersection.h"
 #include "../tuple_map.h"
@@ -10,20 +11,6 @@
 
 namespace sweepcdt::detail {
 namespace {
-
-std::array<uint32_t, 3> sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
-  std::array<uint32_t, 3> k{a, b, c};
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
-// Facet i of tetrahedron `tet` (its vertices but vertex i, in order).
-std::array<uint32_t, 3> facet(const uint32_t* tet, int i) {
-  std::array<uint32_t, 3> f;
-  for (int k = 0, r = 0; k < 4; ++k)
-    if (k != i) f[r++] = tet[k];
-  return f;
-}
 
 // Does constraining triangle `tri` disturb tetrahedron `tet` (disturbed.h)? Exact: interior_meets()
 // decides whether it meets the open tetrahedron, improper_intersection() whether it meets a facet
@@ -34,7 +21,7 @@ bool disturbs(const Plc<3>& plc, const uint32_t* tet, const uint32_t* tri) {
   const std::array<uint32_t, 3> t_ids{tri[0], tri[1], tri[2]};
   if (interior_meets<3>({plc.point(tet[0]), plc.point(tet[1]), plc.point(tet[2]), plc.point(tet[3])}, t)) return true;
   for (int i = 0; i < 4; ++i) {
-    const std::array<uint32_t, 3> f = facet(tet, i);
+    const FacetKey<3> f = facet_key<3>(tet, i);  // sorted: improper_intersection pairs vertices by id
     if (improper_intersection<3>({plc.point(f[0]), plc.point(f[1]), plc.point(f[2])}, f, t, t_ids)) return true;
   }
   return false;
@@ -46,16 +33,17 @@ ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt) {
   const std::size_t m = plc.num_simplices(), tets = dt.tets.size() / 4;
   TupleMap<3> constraint_of(m);
   for (uint32_t c = 0; c < m; ++c) {
-    const uint32_t* v = plc.simplex(c);
-    constraint_of.emplace(sorted_triple(v[0], v[1], v[2]), c);
+    FacetKey<3> key;
+    std::copy_n(plc.simplex(c), 3, key.begin());
+    std::sort(key.begin(), key.end());
+    constraint_of.emplace(key, c);
   }
   ConstraintFaces result;
   result.of_facet.assign(4 * tets, kNone);
   std::vector<uint8_t> present(m, 0);
   for (uint32_t t = 0; t < tets; ++t)
     for (int i = 0; i < 4; ++i) {
-      const std::array<uint32_t, 3> f = facet(&dt.tets[4 * t], i);
-      const uint32_t c = constraint_of.find(sorted_triple(f[0], f[1], f[2]));
+      const uint32_t c = constraint_of.find(facet_key<3>(&dt.tets[4 * t], i));
       if (c == TupleMap<3>::kAbsent) continue;
       result.of_facet[4 * t + i] = c;
       present[c] = 1;

@@ -120,7 +120,7 @@ class Delaunay3 {
     constexpr std::size_t kReportEvery = 1024;
     for (std::size_t k = 0; k < rest.size(); ++k) {
       insert(rest[k]);
-      if (inserted && k % kReportEvery == kReportEvery - 1) inserted(k + 5);
+      if (inserted && k % kReportEvery == kReportEvery - 1) inserted(4 + k + 1);  // the first simplex's 4, then these
     }
   }
 

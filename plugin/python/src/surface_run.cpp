@@ -96,6 +96,8 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   s["queue_pops"] = run.cdt.queue_pops;
   s["stale_pops"] = run.cdt.stale_pops;
   s["drop_moves"] = run.cdt.drop_moves;
+  s["missing_constraints"] = run.cdt.missing_constraints;
+  s["cavity_tetrahedra"] = run.cdt.cavity_tetrahedra;
   s["perturbation_orders"] = run.cdt.perturbation_orders;
   s["perturbation_order"] = run.cdt.perturbation_order;
   s["snapped_points"] = run.snap.points_moved;
