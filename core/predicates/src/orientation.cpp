@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "arith.h"
+#include "filters3.h"
 
 namespace sweepcdt::predicates {
 namespace {
@@ -42,22 +43,8 @@ struct InsphereFormula {
   }
 };
 
-// --- 3D filters -------------------------------------------------------------------------------
-// Rounding counts (see approx.h): differences 1; 2x2 minors 1+1+1 = 3 then the subtraction 4;
-// 3x3 determinant: 4 + 1 + 1 = 6 per term, two sequential additions: 8.
-constexpr double kOrient3Bound = 2.0 * 8 * detail::kUnitRoundoff;
-// insphere: lifts 3 (square) then two additions: 5; 3x3 minors 8 as above; lift * minor: 5+8+1 = 14;
-// (x - y) + (z - w): two more levels: 16.
-constexpr double kInsphere3Bound = 2.0 * 16 * detail::kUnitRoundoff;
-
-// max(|x|) over the arguments by plain comparisons (std::fmax is a libm call here). A NaN may be
-// dropped: the determinant is then NaN too, fails the filter, and the exact stage reports it.
-template <class... T>
-inline double largest_magnitude(T... x) {
-  double m = 0.0;
-  ((m = std::fabs(x) > m ? std::fabs(x) : m), ...);
-  return m;
-}
+// --- 3D filters: filters3.h ------------------------------------------------------------------
+using detail::largest_magnitude;
 
 // Exact-zero fast path, tried only after the filter failed: a determinant with two equal points
 // among its arguments is exactly zero (orient: two equal rows p_i - p_n, or a zero row; insphere: the
@@ -112,61 +99,16 @@ Sign orient2(const Coords<3>& p) {
 }
 
 Sign orient3(const Coords<4>& p) {
-  const double* a = p[0];
-  const double* b = p[1];
-  const double* c = p[2];
-  const double* d = p[3];
-  const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
-  const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
-  const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
-
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
-                           (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
-                           (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-  const double largest = largest_magnitude(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz);
-  if (admissible(largest)) {
-    const double bound = kOrient3Bound * permanent + detail::kUnderflowAbsoluteBound;
-    if (det > bound) return detail::count_filtered(), Sign::Positive;
-    if (det < -bound) return detail::count_filtered(), Sign::Negative;
-  }
+  const detail::Estimate e = detail::orient3_estimate(p);
+  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
+  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
   return orient3_exact(p);
 }
 
 Sign insphere3(const Coords<5>& p) {
-  const double* e = p[4];
-  double dx[4], dy[4], dz[4], lift[4], largest = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    dx[i] = p[i][0] - e[0];
-    dy[i] = p[i][1] - e[1];
-    dz[i] = p[i][2] - e[2];
-    lift[i] = dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i];
-    largest = std::max(largest, largest_magnitude(dx[i], dy[i], dz[i]));
-  }
-  // 2x2 minors of the x,y columns for rows (i, j).
-  auto minor2 = [&](int i, int j) { return dx[i] * dy[j] - dx[j] * dy[i]; };
-  auto minor2_abs = [&](int i, int j) { return std::fabs(dx[i] * dy[j]) + std::fabs(dx[j] * dy[i]); };
-  // 3x3 minors det[r_i; r_j; r_k] of the x,y,z columns, expanded along z.
-  auto minor3 = [&](int i, int j, int k) {
-    return dz[i] * minor2(j, k) - dz[j] * minor2(i, k) + dz[k] * minor2(i, j);
-  };
-  auto minor3_abs = [&](int i, int j, int k) {
-    return std::fabs(dz[i]) * minor2_abs(j, k) + std::fabs(dz[j]) * minor2_abs(i, k) +
-           std::fabs(dz[k]) * minor2_abs(i, j);
-  };
-  // Expansion along the lift column (rows a=0, b=1, c=2, d=3), as in Shewchuk's insphere.
-  const double abc = minor3(0, 1, 2), bcd = minor3(1, 2, 3), cda = minor3(2, 3, 0), dab = minor3(3, 0, 1);
-  const double det = (lift[3] * abc - lift[2] * dab) + (lift[1] * cda - lift[0] * bcd);
-  const double permanent = (lift[3] * minor3_abs(0, 1, 2) + lift[2] * minor3_abs(3, 0, 1)) +
-                           (lift[1] * minor3_abs(2, 3, 0) + lift[0] * minor3_abs(1, 2, 3));
-  if (admissible(largest)) {
-    const double bound = kInsphere3Bound * permanent + detail::kUnderflowAbsoluteBound;
-    if (det > bound) return detail::count_filtered(), Sign::Positive;
-    if (det < -bound) return detail::count_filtered(), Sign::Negative;
-  }
+  const detail::Estimate e = detail::insphere3_estimate(p);
+  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
+  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
   return insphere3_exact(p);
 }
 

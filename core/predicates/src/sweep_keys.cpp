@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "arith.h"
+#include "filters3.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -176,26 +177,37 @@ struct PowerEpsCoefficient {
   }
 };
 
-// An enclosure of num / den from filtered values: |num - num^| <= e_num, |den - den^| <= e_den gives
+// An enclosure of shift + num / den from filtered values: |num - num^| <= e_num, |den - den^| <= e_den gives
 // |num/den - q^| <= (e_num + |q^| e_den) / (|den^| - e_den) + the rounding of q^ (see approx.h for
 // the filter bound); inflated generously to cover the rounding of this bound itself.
-KeyInterval ratio_interval(const detail::Approx& num, const detail::Approx& den, double shift = 0.0) {
+KeyInterval ratio_interval(double num, double e_num, double den, double e_den, double shift = 0.0) {
   const double u = detail::kUnitRoundoff;
-  const auto error = [&](const detail::Approx& a) {
-    return (2.0 * a.rounds * u) * a.mag + detail::kUnderflowAbsoluteBound;
-  };
-  const double e_num = error(num), e_den = error(den);
-  const double q = num.value / den.value;
-  const double margin = std::fabs(den.value) - e_den;
+  const double q = num / den;
+  const double margin = std::fabs(den) - e_den;
   if (!(margin > 0) || !std::isfinite(q) || !std::isfinite(e_num)) return {-INFINITY, INFINITY};
   const double e = ((e_num + std::fabs(q) * e_den) / margin) * (1 + 64 * u) + (std::fabs(q) + std::fabs(shift)) * 8 * u + 0x1p-1000;
   return {shift + q - e, shift + q + e};
+}
+
+KeyInterval ratio_interval(const detail::Approx& num, const detail::Approx& den, double shift = 0.0) {
+  const auto error = [&](const detail::Approx& a) {
+    return (2.0 * a.rounds * detail::kUnitRoundoff) * a.mag + detail::kUnderflowAbsoluteBound;
+  };
+  return ratio_interval(num.value, error(num), den.value, error(den), shift);
 }
 
 }  // namespace
 
 template <int D>
 KeyInterval power_interval(const Vertices<D + 1>& s, const double* q) {
+  if constexpr (D == 3) {
+    // The hand-written filters (filters3.h): L_s is insphere's determinant with q as the fifth
+    // point, Ds orient's. About a tenth of the generic evaluation below, which tracks every
+    // operation's magnitude; the sweeps compute one key per new face.
+    const detail::Estimate l = detail::insphere3_estimate({s[0].x, s[1].x, s[2].x, s[3].x, q});
+    const detail::Estimate d = detail::orient3_estimate(coords_of(s));
+    return ratio_interval(-l.value, l.error, d.value, d.error);
+  }
   detail::FilterArith a;
   // Psi_q(s) = -L_s / Ds.
   const auto l = lifted_det<D>(a, s, Vertex{q, 0});
