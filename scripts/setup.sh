@@ -17,7 +17,7 @@ packages=(
   python3-meshio gmsh calculix-ccx   # tests/io: independent readers of the volume meshes written (and tetgen above)
   python3-dev python3-numpy pybind11-dev python3-pytest   # plugin/python: the module for Debian's /usr/bin/python3, its tests
   freecad-python3 xvfb xauth   # plugin/freecad: FreeCAD 0.20 (FEM, CalculiX via calculix-ccx above); GUI test under Xvfb
-  meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev python3 xz-utils   # plugin/meshlab, its tests (xvfb-run), the SDK fetch
+  meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev python3 xz-utils   # plugin/meshlab, its tests (xvfb-run), the SDK fetch; Eigen also for bench/cgal_delaunay_dd
 )
 
 missing=()
