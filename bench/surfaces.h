@@ -1,6 +1,6 @@
 // Closed test surfaces for the benchmarks, generated (no data files): jittered icospheres and tori,
-// a sphere with a spherical cavity, and an exactly cospherical sphere (integer points with
-// x^2 + y^2 + z^2 = R^2 exactly). All outward counterclockwise, notated exterior Negative.
+// a sphere with a spherical cavity, and an exactly cospherical sphere (the hull of all integer points
+// with x^2 + y^2 + z^2 = n). All outward counterclockwise, notated exterior Negative.
 #pragma once
 #include <array>
 #include <cmath>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sweepcdt/cdt.h"
 #include "sweepcdt/plc.h"
 
 namespace sweepcdt::bench {
@@ -62,28 +63,50 @@ inline void jitter(Mesh& m, double amount, uint64_t seed) {
   }
 }
 
-// Every point moved to an integer point exactly on the sphere x^2 + y^2 + z^2 = R^2: the nearest
-// integer (x, y) to the scaled direction with R^2 - x^2 - y^2 a perfect square, searched nearby.
-// Points that would coincide are rare at large R; the caller checks the PLC.
-inline Mesh cospherical(Mesh m, int64_t radius) {
-  for (auto& p : m.points) {
-    const double sign_z = p[2] < 0 ? -1 : 1;
-    const int64_t x0 = std::llround(p[0] * radius), y0 = std::llround(p[1] * radius);
-    int64_t best_x = 0, best_y = 0, best_z = -1;
-    double best_d = INFINITY;
-    for (int64_t dx = -40; dx <= 40; ++dx)
-      for (int64_t dy = -40; dy <= 40; ++dy) {
-        const int64_t x = x0 + dx, y = y0 + dy, rest = radius * radius - x * x - y * y;
-        if (rest < 0) continue;
-        int64_t z = std::llround(std::sqrt(static_cast<double>(rest)));
-        while (z * z > rest) --z;
-        while ((z + 1) * (z + 1) <= rest) ++z;
-        if (z * z != rest) continue;
-        const double d = std::hypot(x - p[0] * radius, y - p[1] * radius, sign_z * z - p[2] * radius);
-        if (d < best_d) best_d = d, best_x = x, best_y = y, best_z = z;
+// Exactly cospherical: every integer point of the sphere x^2 + y^2 + z^2 = n, and the boundary of their
+// convex hull (each point is a hull vertex; hull faces through four or more cocircular points, which
+// are common here, triangulated as the §6 perturbation splits them). Integer points are spread
+// evenly over such spheres (for n not of the form 4^a (8b + 7)), but their number varies a lot with
+// n: `level` picks an n whose count is near the icosphere of that level's (level 5: 11136 points,
+// level 6: 41952; other levels: the nearest n of the formula, whatever its count).
+inline Mesh cospherical(int level) {
+  const int64_t n = level == 5 ? 1850010 : level == 6 ? 30000001
+                                          : static_cast<int64_t>(std::pow((10.0 * std::pow(4.0, level) + 2) / 7.5, 2)) | 1;
+  Plc<3> points;
+  const auto r = static_cast<int64_t>(std::sqrt(static_cast<double>(n))) + 1;
+  for (int64_t x = -r; x <= r; ++x)
+    for (int64_t y = -r; y <= r; ++y) {
+      const int64_t rest = n - x * x - y * y;
+      if (rest < 0) continue;
+      auto z = static_cast<int64_t>(std::llround(std::sqrt(static_cast<double>(rest))));
+      if (z * z != rest) continue;
+      for (const int64_t zz : {z, -z}) {
+        points.points.insert(points.points.end(), {double(x), double(y), double(zz)});
+        if (z == 0) break;
       }
-    if (best_z >= 0) p = {double(best_x), double(best_y), sign_z * double(best_z)};
-  }
+    }
+  // The hull: the faces of the Delaunay triangulation with one tetrahedron, turned to face outward
+  // (integer orientation: coordinates below 2^13, so the determinant is exact in int64).
+  const Triangulation<3> dt = cdt(points);
+  Mesh m;
+  for (std::size_t i = 0; i < points.num_points(); ++i) m.points.push_back({points.points[3 * i], points.points[3 * i + 1], points.points[3 * i + 2]});
+  for (std::size_t t = 0; t < dt.num_simplices(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      if (dt.neighbors[4 * t + i] != kNone) continue;
+      std::array<uint32_t, 3> f;
+      for (int k = 0, j = 0; k < 4; ++k)
+        if (k != i) f[j++] = dt.simplices[4 * t + k];
+      const auto q = [&](uint32_t v, int k) { return static_cast<int64_t>(m.points[v][k]); };
+      const uint32_t inside = dt.simplices[4 * t + i];
+      int64_t d[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 3; ++k) d[a][k] = q(f[a], k) - q(inside, k);
+      const int64_t det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                          d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+      // orient(f, inside) > 0: `inside` below f seen counterclockwise, so f faces outward as it is.
+      if (det < 0) std::swap(f[0], f[1]);
+      m.triangles.push_back(f);
+    }
   return m;
 }
 

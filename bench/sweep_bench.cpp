@@ -26,7 +26,7 @@ Plc<3> make(const std::string& surface, int size, bench::Mesh& mesh) {
     mesh = bench::icosphere(size);
     bench::jitter(mesh, 1e-3, 1);
   } else if (surface == "cospherical") {
-    mesh = bench::cospherical(bench::icosphere(size), int64_t{1} << 24);
+    mesh = bench::cospherical(size);
   } else if (surface == "torus") {
     mesh = bench::torus(size, std::max(3, size / 3));
     bench::jitter(mesh, 1e-4, 2);
