@@ -10,11 +10,14 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
            tests/integration/steiner_vs_tetgen_test.cpp and more; steiner_bench --cad-noise makes them)
+  --rotated: instead, the clean binary-STL parts turned by 23 degrees about (0.3, 0.5, 0.8) and
+           written again as float32 STL, as an exporter writes a part placed at an angle: no face is
+           then exactly flat (ROTATED)
 
 With --before, only the default command is timed, of both builds in turn (before, after, before,
 after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
@@ -23,10 +26,12 @@ pairwise ratios after/before, which holds up on a shared machine better than two
 import argparse
 import glob
 import json
+import math
 import os
 import resource
 import shutil
 import statistics
+import struct
 import subprocess
 import sys
 import tempfile
@@ -43,6 +48,33 @@ NOISY = [("bracket_fine.stl", 0.5), ("flange_fine.stl", 0.1), ("flange_fine.stl"
          ("pipe_tee_std.stl", 0.1), ("plate_with_holes_std.stl", 0.5), ("plate_with_holes_fine.stl", 0.1),
          ("box_fused_sphere_fine.stl", 0.5), ("filleted_box_fine.stl", 1.0), ("gear_fine.stl", 0.5),
          ("hex_nut_fine.stl", 0.5), ("rotated_box_fine.stl", 0.5)]
+
+ROTATED = ["bracket_std.stl", "filleted_box_std.stl", "flange_std.stl", "flange_fine.stl", "gear_fine.stl",
+           "hex_nut_fine.stl", "plate_with_holes_std.stl", "plate_with_holes_fine.stl", "two_bodies_fine.stl"]
+
+
+def rotated_stl(source, target, degrees=23.0, axis=(0.3, 0.5, 0.8)):
+    """Binary STL `source` turned about `axis` through the origin, written as binary STL (float32)."""
+    with open(source, "rb") as f:
+        data = f.read()
+    count = struct.unpack_from("<I", data, 80)[0]
+    if len(data) != 84 + 50 * count:
+        raise ValueError(f"{source}: not a binary STL")
+    n = math.sqrt(sum(a * a for a in axis))
+    x, y, z = (a / n for a in axis)
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    t = 1 - c
+    r = [[c + x * x * t, x * y * t - z * s, x * z * t + y * s],
+         [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
+         [z * x * t - y * s, z * y * t + x * s, c + z * z * t]]
+    out = bytearray(data[:84])
+    for i in range(count):
+        v = struct.unpack_from("<12f", data, 84 + 50 * i)
+        corners = [v[3 * k:3 * k + 3] for k in range(1, 4)]
+        turned = [sum(r[row][col] * p[col] for col in range(3)) for p in corners for row in range(3)]
+        out += struct.pack("<12f", 0, 0, 0, *turned) + b"\0\0"
+    with open(target, "wb") as f:
+        f.write(out)
 
 
 def timed(cmd, cwd):
@@ -138,6 +170,7 @@ def main():
     ap.add_argument("--before", help="a second build: time the default command of both, paired")
     ap.add_argument("--repeat", type=int)
     ap.add_argument("--noise", action="store_true", help="CAD parts with rounding noise (NOISY)")
+    ap.add_argument("--rotated", action="store_true", help="CAD parts turned by 23 degrees (ROTATED)")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -154,6 +187,12 @@ def main():
             path = os.path.join(noisy_dir.name, stem + ".off")
             subprocess.run([converter, os.path.join(ROOT, "tests", "data", "cad", name), "--cad-noise", str(fraction),
                             "--off", path, "--count-only"], check=True, capture_output=True)
+            files.append(path)
+    if args.rotated:
+        files = []
+        for name in ROTATED:
+            path = os.path.join(noisy_dir.name, name.replace(".stl", "_rotated.stl"))
+            rotated_stl(os.path.join(ROOT, "tests", "data", "cad", name), path)
             files.append(path)
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
