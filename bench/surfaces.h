@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "sweepcdt/cdt.h"
+#include "integer_sphere.h"  // tests/support
 #include "sweepcdt/plc.h"
 
 namespace sweepcdt::bench {
@@ -63,50 +63,16 @@ inline void jitter(Mesh& m, double amount, uint64_t seed) {
   }
 }
 
-// Exactly cospherical: every integer point of the sphere x^2 + y^2 + z^2 = n, and the boundary of their
-// convex hull (each point is a hull vertex; hull faces through four or more cocircular points, which
-// are common here, triangulated as the §6 perturbation splits them). Integer points are spread
-// evenly over such spheres (for n not of the form 4^a (8b + 7)), but their number varies a lot with
-// n: `level` picks an n whose count is near the icosphere of that level's (level 5: 11136 points,
-// level 6: 41952; other levels: the nearest n of the formula, whatever its count).
+// Exactly cospherical (tests/support/integer_sphere.h): `level` picks an n whose point count is near
+// the icosphere of that level's (level 5: 11136 points, level 6: 41952; other levels: an n by a
+// rough formula, whatever its count).
 inline Mesh cospherical(int level) {
   const int64_t n = level == 5 ? 1850010 : level == 6 ? 30000001
                                           : static_cast<int64_t>(std::pow((10.0 * std::pow(4.0, level) + 2) / 7.5, 2)) | 1;
-  Plc<3> points;
-  const auto r = static_cast<int64_t>(std::sqrt(static_cast<double>(n))) + 1;
-  for (int64_t x = -r; x <= r; ++x)
-    for (int64_t y = -r; y <= r; ++y) {
-      const int64_t rest = n - x * x - y * y;
-      if (rest < 0) continue;
-      auto z = static_cast<int64_t>(std::llround(std::sqrt(static_cast<double>(rest))));
-      if (z * z != rest) continue;
-      for (const int64_t zz : {z, -z}) {
-        points.points.insert(points.points.end(), {double(x), double(y), double(zz)});
-        if (z == 0) break;
-      }
-    }
-  // The hull: the faces of the Delaunay triangulation with one tetrahedron, turned to face outward
-  // (integer orientation: coordinates below 2^13, so the determinant is exact in int64).
-  const Triangulation<3> dt = cdt(points);
+  const Plc<3> hull = fixtures::integer_sphere_hull(n);
   Mesh m;
-  for (std::size_t i = 0; i < points.num_points(); ++i) m.points.push_back({points.points[3 * i], points.points[3 * i + 1], points.points[3 * i + 2]});
-  for (std::size_t t = 0; t < dt.num_simplices(); ++t)
-    for (int i = 0; i < 4; ++i) {
-      if (dt.neighbors[4 * t + i] != kNone) continue;
-      std::array<uint32_t, 3> f;
-      for (int k = 0, j = 0; k < 4; ++k)
-        if (k != i) f[j++] = dt.simplices[4 * t + k];
-      const auto q = [&](uint32_t v, int k) { return static_cast<int64_t>(m.points[v][k]); };
-      const uint32_t inside = dt.simplices[4 * t + i];
-      int64_t d[3][3];
-      for (int a = 0; a < 3; ++a)
-        for (int k = 0; k < 3; ++k) d[a][k] = q(f[a], k) - q(inside, k);
-      const int64_t det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-                          d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-      // orient(f, inside) > 0: `inside` below f seen counterclockwise, so f faces outward as it is.
-      if (det < 0) std::swap(f[0], f[1]);
-      m.triangles.push_back(f);
-    }
+  for (std::size_t i = 0; i < hull.num_points(); ++i) m.points.push_back({hull.points[3 * i], hull.points[3 * i + 1], hull.points[3 * i + 2]});
+  for (std::size_t j = 0; j < hull.num_simplices(); ++j) m.triangles.push_back({hull.simplices[3 * j], hull.simplices[3 * j + 1], hull.simplices[3 * j + 2]});
   return m;
 }
 

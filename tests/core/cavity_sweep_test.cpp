@@ -11,6 +11,7 @@
 #include "cad_noise.h"
 #include "cavity/disturbed.h"
 #include "simplex_interior.h"
+#include "integer_sphere.h"
 #include "random_plc.h"
 #include "sweepcdt/cdt.h"
 #include "test_shapes.h"
@@ -132,6 +133,19 @@ TEST(CavitySweep, SurfacesWithSteinerPoints) {
 }
 
 // Several bodies, one inside another's cavity, and a convex hull domain without constraints.
+// Exactly cospherical: the hull of every integer point on x^2 + y^2 + z^2 = 4001 (864 points, every
+// insphere test among them an exact zero) as a closed surface and as a point set.
+TEST(CavitySweep, ExactlyCosphericalIntegerSphere) {
+  const Plc<3> hull = fixtures::integer_sphere_hull(4001);
+  ASSERT_EQ(hull.num_points(), 864u);
+  ASSERT_EQ(hull.num_simplices(), 2 * 864u - 4);  // a closed triangulated sphere with every point on it
+  expect_same_as_sweep(hull, "integer sphere, facets");
+  Plc<3> points;
+  points.points = hull.points;
+  const CdtStatistics stats = expect_same_as_sweep(points, "integer sphere, points");
+  EXPECT_EQ(stats.missing_constraints, 0u);
+}
+
 TEST(CavitySweep, BodiesAndPointSets) {
   Plc<3> bodies;
   fixtures::add_box(bodies, {0, 0, 0}, {6, 6, 6}, true);
