@@ -7,6 +7,7 @@
 
 #include "arith.h"
 #include "filters3.h"
+#include "filters4.h"
 
 namespace sweepcdt::predicates {
 namespace {
@@ -112,12 +113,20 @@ Sign insphere3(const Coords<5>& p) {
   return insphere3_exact(p);
 }
 
+Sign orient4(const Coords<5>& p) {
+  const detail::Estimate e = detail::orient4_estimate(p);
+  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
+  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
+  return detail::exact_sign(OrientFormula<4>{p});
+}
+
 }  // namespace
 
 template <int D>
 Sign orient(const Coords<D + 1>& p) {
   if constexpr (D == 2) return orient2(p);
   else if constexpr (D == 3) return orient3(p);
+  else if constexpr (D == 4) return orient4(p);
   else return detail::filtered_sign(OrientFormula<D>{p});
 }
 
