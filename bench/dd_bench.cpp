@@ -5,10 +5,6 @@
 //
 //   dd_bench D N [--algorithm sweep-sphere|sweep-plane|giftwrap|cavity-sweep] [--repeat K]
 //                [--points PATH]     (D = 2..5; PATH: N lines of D coordinates, then exit)
-#include <sys/resource.h>
-
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -16,6 +12,7 @@
 #include <vector>
 
 #include "sweepcdt/cdt.h"
+#include "timed_cdt.h"
 
 using namespace sweepcdt;
 
@@ -33,31 +30,13 @@ template <int D>
 int run(int n, const Options& options, int repeat) {
   Plc<D> plc;
   plc.points = random_points(D, n);
-  CdtStatistics stats;
-  Options timed = options;
-  timed.statistics = &stats;
-  std::vector<double> seconds;
-  std::size_t simplices = 0;
-  std::string error;
-  for (int r = 0; r < repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      simplices = cdt(plc, timed).num_simplices();
-    } catch (const std::exception& e) {
-      error = e.what();
-      break;
-    }
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  // The phases' seconds are the last run's (cdt() resets its statistics).
+  const bench::TimedCdt t = bench::timed_cdt(plc, options, repeat);
+  const CdtStatistics& stats = t.stats;
   std::printf("{\"dimension\": %d, \"points\": %d, \"algorithm\": \"%s\", \"simplices\": %zu, \"median_seconds\": %.4f, "
               "\"check\": %.4f, \"setup\": %.4f, \"build\": %.4f, \"finish\": %.4f, \"peak_rss_mb\": %.1f, \"error\": \"%s\"}\n",
-              D, n, to_string(stats.algorithm), simplices, seconds.empty() ? -1.0 : seconds[seconds.size() / 2],
-              stats.seconds_check, stats.seconds_setup, stats.seconds_build, stats.seconds_finish, usage.ru_maxrss / 1024.0, error.c_str());
-  return error.empty() ? 0 : 4;
+              D, n, to_string(stats.algorithm), t.simplices, t.median_seconds, stats.seconds_check, stats.seconds_setup,
+              stats.seconds_build, stats.seconds_finish, t.peak_rss_mb, t.error.c_str());
+  return t.error.empty() ? 0 : 4;
 }
 
 }  // namespace

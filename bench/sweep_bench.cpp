@@ -5,10 +5,8 @@
 //               [--threads N] [--off PATH]
 //   SURFACE: icosphere | cospherical | torus | cavity | cube-points (random points, convex hull)
 //   SIZE:    icosphere/cospherical/cavity: subdivision levels; torus: quads around; cube-points: points
-#include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -16,6 +14,7 @@
 
 #include "surfaces.h"
 #include "sweepcdt/cdt.h"
+#include "timed_cdt.h"
 
 using namespace sweepcdt;
 
@@ -75,30 +74,14 @@ int main(int argc, char** argv) {
   const Plc<3> plc = make(argv[1], std::atoi(argv[2]), mesh);
   if (!off.empty()) return bench::write_off(mesh, off) ? 0 : 5;
 
-  std::vector<double> seconds;
-  CdtStatistics stats;
-  options.statistics = &stats;
-  std::size_t tets = 0;
-  std::string error;
-  for (int r = 0; r < repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      tets = cdt(plc, options).num_simplices();
-    } catch (const std::exception& e) {
-      error = e.what();
-      break;
-    }
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
+  const bench::TimedCdt t = bench::timed_cdt(plc, options, repeat);
+  const CdtStatistics& stats = t.stats;
   std::printf("{\"surface\": \"%s\", \"triangles\": %zu, \"points\": %zu, \"algorithm\": \"%s\", \"tets\": %zu, "
               "\"median_seconds\": %.4f, \"check\": %.4f, \"setup\": %.4f, \"build\": %.4f, \"finish\": %.4f, "
               "\"queue_pops\": %lu, \"drop_moves\": %lu, \"peak_rss_mb\": %.1f, \"error\": \"%s\"}\n",
-              argv[1], plc.num_simplices(), plc.num_points(), to_string(stats.algorithm), tets,
-              seconds.empty() ? -1.0 : seconds[seconds.size() / 2], stats.seconds_check, stats.seconds_setup,
-              stats.seconds_build, stats.seconds_finish, static_cast<unsigned long>(stats.queue_pops),
-              static_cast<unsigned long>(stats.drop_moves), usage.ru_maxrss / 1024.0, error.c_str());
-  return error.empty() ? 0 : 4;
+              argv[1], plc.num_simplices(), plc.num_points(), to_string(stats.algorithm), t.simplices, t.median_seconds,
+              stats.seconds_check, stats.seconds_setup, stats.seconds_build, stats.seconds_finish,
+              static_cast<unsigned long>(stats.queue_pops), static_cast<unsigned long>(stats.drop_moves), t.peak_rss_mb,
+              t.error.c_str());
+  return t.error.empty() ? 0 : 4;
 }
