@@ -120,6 +120,13 @@ Sign orient4(const Coords<5>& p) {
   return detail::exact_sign(OrientFormula<4>{p});
 }
 
+Sign insphere4(const Coords<6>& p) {
+  const detail::Estimate e = detail::insphere4_estimate(p);
+  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
+  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
+  return detail::exact_sign(InsphereFormula<4>{p});
+}
+
 }  // namespace
 
 template <int D>
@@ -133,6 +140,7 @@ Sign orient(const Coords<D + 1>& p) {
 template <int D>
 Sign insphere(const Coords<D + 2>& p) {
   if constexpr (D == 3) return insphere3(p);
+  else if constexpr (D == 4) return insphere4(p);
   else return detail::filtered_sign(InsphereFormula<D>{p});
 }
 

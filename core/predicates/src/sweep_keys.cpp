@@ -8,6 +8,7 @@
 
 #include "arith.h"
 #include "filters3.h"
+#include "filters4.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -206,6 +207,10 @@ KeyInterval power_interval(const Vertices<D + 1>& s, const double* q) {
     // operation's magnitude; the sweeps compute one key per new face.
     const detail::Estimate l = detail::insphere3_estimate({s[0].x, s[1].x, s[2].x, s[3].x, q});
     const detail::Estimate d = detail::orient3_estimate(coords_of(s));
+    return ratio_interval(-l.value, l.error, d.value, d.error);
+  } else if constexpr (D == 4) {  // the same with filters4.h
+    const detail::Estimate l = detail::insphere4_estimate({s[0].x, s[1].x, s[2].x, s[3].x, s[4].x, q});
+    const detail::Estimate d = detail::orient4_estimate(coords_of(s));
     return ratio_interval(-l.value, l.error, d.value, d.error);
   }
   detail::FilterArith a;
