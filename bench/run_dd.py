@@ -6,8 +6,10 @@ Delaunay triangulation (under the §6 perturbation), so both compute the same si
 choice made among cospherical points (random points have none); the simplex counts are printed to
 show it. Medians of --repeat runs in one process each; prints a Markdown table.
 
-Usage: bench/run_dd.py [BUILD_DIR] [--repeat K] [--sizes 1000,5000] [--dimensions 4,5]
+Usage: bench/run_dd.py [BUILD_DIR] [--repeat 3] [--sizes 1000,4000,16000] [--dimensions 4,5]
        [--algorithms sweep-sphere]   (the sweep plane needs a facet-bounded domain: on points it is the sphere)
+The defaults take long in D = 5 (16000 points: minutes a run); the README's table ran
+--dimensions 4, then --dimensions 5 --sizes 1000,4000 --repeat 1.
 """
 import argparse
 import json

@@ -64,11 +64,12 @@ inline void jitter(Mesh& m, double amount, uint64_t seed) {
 }
 
 // Exactly cospherical (tests/support/integer_sphere.h): `level` picks an n whose point count is near
-// the icosphere of that level's (level 5: 11136 points, level 6: 41952; other levels: an n by a
-// rough formula, whatever its count).
+// the icosphere of that level's (level 5: 11136 points, level 6: 41952). Other levels take n from
+// the rough count r3(n) ~ 7.5 sqrt(n), moved to the next n that is neither 7 mod 8 (no point) nor a
+// multiple of 4 (the points of n/4, doubled): the count there may be off by a factor of 2.
 inline Mesh cospherical(int level) {
-  const int64_t n = level == 5 ? 1850010 : level == 6 ? 30000001
-                                          : static_cast<int64_t>(std::pow((10.0 * std::pow(4.0, level) + 2) / 7.5, 2)) | 1;
+  int64_t n = level == 5 ? 1850010 : level == 6 ? 30000001 : static_cast<int64_t>(std::pow((10.0 * std::pow(4.0, level) + 2) / 7.5, 2));
+  while (n % 8 == 7 || n % 4 == 0) ++n;
   const Plc<3> hull = fixtures::integer_sphere_hull(n);
   Mesh m;
   for (std::size_t i = 0; i < hull.num_points(); ++i) m.points.push_back({hull.points[3 * i], hull.points[3 * i + 1], hull.points[3 * i + 2]});

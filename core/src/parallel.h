@@ -1,8 +1,9 @@
-// Internal: deterministic data parallelism for the exact checks (the PLC check, validate()). [0, n) is cut into contiguous parts, one per thread; each part
-// writes only its own result, and the caller combines the results in part order — so the answer,
-// down to the order of reported problems, is the same for any number of threads. Ties the helper
-// threads' predicates decide by the perturbation are credited to the calling thread (cdt() reads
-// that count to decide whether another perturbation order may help, paper §6).
+// Internal: deterministic data parallelism for the exact checks (the PLC check, validate()).
+// [0, n) is cut into contiguous parts, one per thread; each part writes only its own result, and
+// the caller combines the results in part order — so the answer, down to the order of reported
+// problems, is the same for any number of threads. Ties the helper threads' predicates decide by
+// the perturbation are credited to the calling thread (cdt() reads that count to decide whether
+// another perturbation order may help, paper §6).
 #pragma once
 #include <algorithm>
 #include <cstddef>

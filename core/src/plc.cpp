@@ -223,7 +223,7 @@ std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_k
 template <int D>
 void check(const Plc<D>& plc, unsigned threads) {
   uint64_t total = 0;
-  auto problems = find_problems(plc, 10, &total, static_cast<std::shared_ptr<const PlcCheck<D>>*>(nullptr), threads);
+  auto problems = find_problems<D>(plc, 10, &total, nullptr, threads);
   if (total > 0) throw PlcError(std::move(problems), total);
 }
 

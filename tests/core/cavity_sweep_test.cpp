@@ -132,12 +132,11 @@ TEST(CavitySweep, SurfacesWithSteinerPoints) {
   EXPECT_GT(missing, 0u) << "no surface exercised a cavity";
 }
 
-// Several bodies, one inside another's cavity, and a convex hull domain without constraints.
 // Exactly cospherical: the hull of every integer point on x^2 + y^2 + z^2 = 4001 (864 points, every
 // insphere test among them an exact zero) as a closed surface and as a point set.
 TEST(CavitySweep, ExactlyCosphericalIntegerSphere) {
   const Plc<3> hull = fixtures::integer_sphere_hull(4001);
-  ASSERT_EQ(hull.num_points(), 864u);
+  ASSERT_EQ(hull.num_points(), 864u);  // r3(4001), counted by a separate brute-force loop
   ASSERT_EQ(hull.num_simplices(), 2 * 864u - 4);  // a closed triangulated sphere with every point on it
   expect_same_as_sweep(hull, "integer sphere, facets");
   Plc<3> points;
@@ -146,6 +145,7 @@ TEST(CavitySweep, ExactlyCosphericalIntegerSphere) {
   EXPECT_EQ(stats.missing_constraints, 0u);
 }
 
+// Several bodies, one inside another's cavity, and a convex hull domain without constraints.
 TEST(CavitySweep, BodiesAndPointSets) {
   Plc<3> bodies;
   fixtures::add_box(bodies, {0, 0, 0}, {6, 6, 6}, true);

@@ -207,8 +207,8 @@ TYPED_TEST(SweepKeys, UnperturbedRandomDoubles) {
   EXPECT_GT(decided, cases * 9 / 10);
 }
 
-// The certified enclosures the sweeps order their queues by (power_interval: the hand-written 3D
-// filters, the generic ones in other dimensions; circumcenter_interval) contain the exact keys, on
+// The certified enclosures the sweeps order their queues by (power_interval: the hand-written
+// filters in D = 3, 4, the generic ones in D = 2, 5; circumcenter_interval) contain the exact keys, on
 // random doubles, on near-degenerate sets (grid points moved by a few ulps) and at large and small
 // scales, and are finite (informative) on most of them.
 TYPED_TEST(SweepKeys, KeyIntervalsEncloseTheExactKeys) {

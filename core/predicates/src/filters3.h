@@ -3,6 +3,7 @@
 // orientation.cpp decides signs with them; sweep_keys.cpp encloses power keys with them (each of
 // those is an insphere determinant over an orient determinant), both the hot path of the sweeps.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "approx.h"

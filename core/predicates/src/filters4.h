@@ -1,15 +1,44 @@
 // The hand-written 4D filters (as filters3.h for 3D): the orient and insphere determinants of
-// differences by their 2x2 minors, in doubles, with a certified error bound. The generic filter (FilterArith,
-// approx.h) tracks a magnitude and a rounding count through every operation of a Laplace expansion
-// over row subsets; in the 4D sweeps it was half of the time.
+// differences by their 2x2 minors, in doubles, with a certified error bound. The generic filter
+// (FilterArith, approx.h) tracks a magnitude and a rounding count through every operation of a
+// Laplace expansion over row subsets; in the 4D sweeps it was half of the time.
 #pragma once
+#include <algorithm>
+#include <utility>
+
 #include "filters3.h"
 
 namespace sweepcdt::predicates::detail {
 
-// det [p_i - p_4]_{i<4} = sum over the row pairs (i, j) of +-minor_xy(i, j) * minor_zw(k, l), (k, l)
-// the complementary pair. Rounding counts (approx.h): differences 1; products 3; 2x2 minors 4; a
-// product of two minors 4 + 4 + 1 = 9; the six terms summed in sequence: 14.
+// The 2x2 minors of columns (0, 1) and (2, 3) of N rows of 4 differences, for every row pair i < j,
+// with their permanents; det4() combines them into the determinant of any four of the rows.
+template <int N>
+struct PairMinors {
+  double m01[N][N], m23[N][N], a01[N][N], a23[N][N];
+
+  explicit PairMinors(const double (&d)[N][4]) {
+    for (int i = 0; i < N; ++i)
+      for (int j = i + 1; j < N; ++j) {
+        m01[i][j] = d[i][0] * d[j][1] - d[j][0] * d[i][1];
+        m23[i][j] = d[i][2] * d[j][3] - d[j][2] * d[i][3];
+        a01[i][j] = std::fabs(d[i][0] * d[j][1]) + std::fabs(d[j][0] * d[i][1]);
+        a23[i][j] = std::fabs(d[i][2] * d[j][3]) + std::fabs(d[j][2] * d[i][3]);
+      }
+  }
+
+  // det and permanent of rows r[0] < r[1] < r[2] < r[3]: the sum over the row pairs (i, j) of
+  // +-minor01(i, j) * minor23(the other two). Rounding counts (approx.h): differences 1; products 3;
+  // 2x2 minors 4; a product of two minors 4 + 4 + 1 = 9; the six terms summed in sequence: 14.
+  static constexpr int kRounds = 14;
+  std::pair<double, double> det4(const int (&r)[4]) const {
+    const auto term = [&](int i, int j, int k, int l) { return m01[r[i]][r[j]] * m23[r[k]][r[l]]; };
+    const auto perm = [&](int i, int j, int k, int l) { return a01[r[i]][r[j]] * a23[r[k]][r[l]]; };
+    return {term(0, 1, 2, 3) - term(0, 2, 1, 3) + term(0, 3, 1, 2) + term(1, 2, 0, 3) - term(1, 3, 0, 2) + term(2, 3, 0, 1),
+            perm(0, 1, 2, 3) + perm(0, 2, 1, 3) + perm(0, 3, 1, 2) + perm(1, 2, 0, 3) + perm(1, 3, 0, 2) + perm(2, 3, 0, 1)};
+  }
+};
+
+// det [p_i - p_4]_{i<4}.
 inline Estimate orient4_estimate(const Coords<5>& p) {
   double d[4][4], largest = 0.0;
   for (int i = 0; i < 4; ++i)
@@ -17,21 +46,14 @@ inline Estimate orient4_estimate(const Coords<5>& p) {
       d[i][k] = p[i][k] - p[4][k];
       largest = std::max(largest, std::fabs(d[i][k]));
     }
-  // 2x2 minors of columns (0, 1) and (2, 3) for rows i < j, and their permanents.
-  const auto minor = [&](int i, int j, int c) { return d[i][c] * d[j][c + 1] - d[j][c] * d[i][c + 1]; };
-  const auto minor_abs = [&](int i, int j, int c) { return std::fabs(d[i][c] * d[j][c + 1]) + std::fabs(d[j][c] * d[i][c + 1]); };
-  const double det = minor(0, 1, 0) * minor(2, 3, 2) - minor(0, 2, 0) * minor(1, 3, 2) + minor(0, 3, 0) * minor(1, 2, 2) +
-                     minor(1, 2, 0) * minor(0, 3, 2) - minor(1, 3, 0) * minor(0, 2, 2) + minor(2, 3, 0) * minor(0, 1, 2);
-  const double permanent = minor_abs(0, 1, 0) * minor_abs(2, 3, 2) + minor_abs(0, 2, 0) * minor_abs(1, 3, 2) +
-                           minor_abs(0, 3, 0) * minor_abs(1, 2, 2) + minor_abs(1, 2, 0) * minor_abs(0, 3, 2) +
-                           minor_abs(1, 3, 0) * minor_abs(0, 2, 2) + minor_abs(2, 3, 0) * minor_abs(0, 1, 2);
-  return {det, error_bound(14, permanent, largest)};
+  const auto [det, permanent] = PairMinors<4>(d).det4({0, 1, 2, 3});
+  return {det, error_bound(PairMinors<4>::kRounds, permanent, largest)};
 }
 
-// det [p_i - p_5, |p_i - p_5|^2]_{i<5}, expanded along the lift column: sum of (-1)^i lift_i * M_i,
-// M_i the 4x4 determinant of the difference rows but i, by the same 2x2-minor formula as orient4
-// (the minors shared). Rounding counts: lifts 3 (squares) + 3 (four terms in sequence) = 6;
-// M_i 14; lift_i * M_i 6 + 14 + 1 = 21; the five terms in sequence: 25.
+// det [p_i - p_5, |p_i - p_5|^2]_{i<5}, expanded along the lift column: the sum of (-1)^i lift_i M_i,
+// M_i the 4x4 determinant of the difference rows but i (the 2x2 minors shared). Rounding counts:
+// lifts 3 (squares) + 3 (four terms in sequence) = 6; M_i 14; lift_i M_i 6 + 14 + 1 = 21; the five
+// terms in sequence: 25.
 inline Estimate insphere4_estimate(const Coords<6>& p) {
   double d[5][4], lift[5], largest = 0.0;
   for (int i = 0; i < 5; ++i) {
@@ -41,30 +63,32 @@ inline Estimate insphere4_estimate(const Coords<6>& p) {
     }
     lift[i] = ((d[i][0] * d[i][0] + d[i][1] * d[i][1]) + d[i][2] * d[i][2]) + d[i][3] * d[i][3];
   }
-  // 2x2 minors of columns (0, 1) and (2, 3) for every row pair, and their permanents.
-  double m01[5][5], m23[5][5], a01[5][5], a23[5][5];
-  for (int i = 0; i < 5; ++i)
-    for (int j = i + 1; j < 5; ++j) {
-      m01[i][j] = d[i][0] * d[j][1] - d[j][0] * d[i][1];
-      m23[i][j] = d[i][2] * d[j][3] - d[j][2] * d[i][3];
-      a01[i][j] = std::fabs(d[i][0] * d[j][1]) + std::fabs(d[j][0] * d[i][1]);
-      a23[i][j] = std::fabs(d[i][2] * d[j][3]) + std::fabs(d[j][2] * d[i][3]);
-    }
+  const PairMinors<5> minors(d);
   double det = 0.0, permanent = 0.0;
   for (int skip = 0; skip < 5; ++skip) {
     int r[4];
     for (int i = 0, n = 0; i < 5; ++i)
       if (i != skip) r[n++] = i;
-    // The 4x4 determinant of rows r[0..3], as in orient4_estimate.
-    const double minor = m01[r[0]][r[1]] * m23[r[2]][r[3]] - m01[r[0]][r[2]] * m23[r[1]][r[3]] + m01[r[0]][r[3]] * m23[r[1]][r[2]] +
-                         m01[r[1]][r[2]] * m23[r[0]][r[3]] - m01[r[1]][r[3]] * m23[r[0]][r[2]] + m01[r[2]][r[3]] * m23[r[0]][r[1]];
-    const double minor_abs = a01[r[0]][r[1]] * a23[r[2]][r[3]] + a01[r[0]][r[2]] * a23[r[1]][r[3]] + a01[r[0]][r[3]] * a23[r[1]][r[2]] +
-                             a01[r[1]][r[2]] * a23[r[0]][r[3]] + a01[r[1]][r[3]] * a23[r[0]][r[2]] + a01[r[2]][r[3]] * a23[r[0]][r[1]];
+    const auto [minor, minor_permanent] = minors.det4(r);
     const double term = lift[skip] * minor;  // sign (-1)^(skip + 4) = (-1)^skip
     det = skip == 0 ? term : (skip % 2 ? det - term : det + term);
-    permanent += lift[skip] * minor_abs;
+    permanent += lift[skip] * minor_permanent;
   }
   return {det, error_bound(25, permanent, largest)};
+}
+
+// The hand-written filters by dimension, for code generic in D (sweep_keys.cpp).
+template <int D>
+inline constexpr bool kHandWrittenFilter = D == 3 || D == 4;
+template <int D>
+Estimate orient_estimate(const Coords<D + 1>& p) {
+  if constexpr (D == 3) return orient3_estimate(p);
+  else return orient4_estimate(p);
+}
+template <int D>
+Estimate insphere_estimate(const Coords<D + 2>& p) {
+  if constexpr (D == 3) return insphere3_estimate(p);
+  else return insphere4_estimate(p);
 }
 
 }  // namespace sweepcdt::predicates::detail

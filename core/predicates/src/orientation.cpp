@@ -1,13 +1,12 @@
 // orient and insphere for D = 1..5: generic formulas through filtered_sign(), and hand-written 3D
-// filters (the hot path of tetrahedralization) with constexpr bounds derived as in approx.h.
+// and 4D filters (filters3.h, filters4.h: the hot paths of the sweeps) with bounds derived as in approx.h.
 #include "sweepcdt/predicates/orientation.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "arith.h"
-#include "filters3.h"
-#include "filters4.h"
+#include "filters4.h"  // and filters3.h
 
 namespace sweepcdt::predicates {
 namespace {
@@ -44,7 +43,7 @@ struct InsphereFormula {
   }
 };
 
-// --- 3D filters: filters3.h ------------------------------------------------------------------
+// The hand-written 3D and 4D filters are in filters3.h and filters4.h.
 using detail::largest_magnitude;
 
 // Exact-zero fast path, tried only after the filter failed: a determinant with two equal points
@@ -99,32 +98,12 @@ Sign orient2(const Coords<3>& p) {
   return detail::exact_sign(InsphereFormula<3>{p});
 }
 
-Sign orient3(const Coords<4>& p) {
-  const detail::Estimate e = detail::orient3_estimate(p);
+// The sign a hand-written filter's estimate certifies (filters3.h, filters4.h), else exact().
+template <class Exact>
+inline Sign certified_or(const detail::Estimate& e, Exact&& exact) {
   if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
   if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
-  return orient3_exact(p);
-}
-
-Sign insphere3(const Coords<5>& p) {
-  const detail::Estimate e = detail::insphere3_estimate(p);
-  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
-  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
-  return insphere3_exact(p);
-}
-
-Sign orient4(const Coords<5>& p) {
-  const detail::Estimate e = detail::orient4_estimate(p);
-  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
-  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
-  return detail::exact_sign(OrientFormula<4>{p});
-}
-
-Sign insphere4(const Coords<6>& p) {
-  const detail::Estimate e = detail::insphere4_estimate(p);
-  if (e.value > e.error) return detail::count_filtered(), Sign::Positive;
-  if (e.value < -e.error) return detail::count_filtered(), Sign::Negative;
-  return detail::exact_sign(InsphereFormula<4>{p});
+  return exact();
 }
 
 }  // namespace
@@ -132,15 +111,15 @@ Sign insphere4(const Coords<6>& p) {
 template <int D>
 Sign orient(const Coords<D + 1>& p) {
   if constexpr (D == 2) return orient2(p);
-  else if constexpr (D == 3) return orient3(p);
-  else if constexpr (D == 4) return orient4(p);
+  else if constexpr (D == 3) return certified_or(detail::orient3_estimate(p), [&] { return orient3_exact(p); });
+  else if constexpr (D == 4) return certified_or(detail::orient4_estimate(p), [&] { return detail::exact_sign(OrientFormula<4>{p}); });
   else return detail::filtered_sign(OrientFormula<D>{p});
 }
 
 template <int D>
 Sign insphere(const Coords<D + 2>& p) {
-  if constexpr (D == 3) return insphere3(p);
-  else if constexpr (D == 4) return insphere4(p);
+  if constexpr (D == 3) return certified_or(detail::insphere3_estimate(p), [&] { return insphere3_exact(p); });
+  else if constexpr (D == 4) return certified_or(detail::insphere4_estimate(p), [&] { return detail::exact_sign(InsphereFormula<4>{p}); });
   else return detail::filtered_sign(InsphereFormula<D>{p});
 }
 

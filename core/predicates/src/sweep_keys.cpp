@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "arith.h"
-#include "filters3.h"
-#include "filters4.h"
+#include "filters4.h"  // and filters3.h
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -201,16 +200,14 @@ KeyInterval ratio_interval(const detail::Approx& num, const detail::Approx& den,
 
 template <int D>
 KeyInterval power_interval(const Vertices<D + 1>& s, const double* q) {
-  if constexpr (D == 3) {
-    // The hand-written filters (filters3.h): L_s is insphere's determinant with q as the fifth
-    // point, Ds orient's. About a tenth of the generic evaluation below, which tracks every
+  if constexpr (detail::kHandWrittenFilter<D>) {
+    // The hand-written filters (filters3.h, filters4.h): L_s is insphere's determinant with q as the
+    // last point, Ds orient's. About a tenth of the generic evaluation below, which tracks every
     // operation's magnitude; the sweeps compute one key per new face.
-    const detail::Estimate l = detail::insphere3_estimate({s[0].x, s[1].x, s[2].x, s[3].x, q});
-    const detail::Estimate d = detail::orient3_estimate(coords_of(s));
-    return ratio_interval(-l.value, l.error, d.value, d.error);
-  } else if constexpr (D == 4) {  // the same with filters4.h
-    const detail::Estimate l = detail::insphere4_estimate({s[0].x, s[1].x, s[2].x, s[3].x, s[4].x, q});
-    const detail::Estimate d = detail::orient4_estimate(coords_of(s));
+    Coords<D + 2> lifted;
+    for (int i = 0; i <= D; ++i) lifted[i] = s[i].x;
+    lifted[D + 1] = q;
+    const detail::Estimate l = detail::insphere_estimate<D>(lifted), d = detail::orient_estimate<D>(coords_of(s));
     return ratio_interval(-l.value, l.error, d.value, d.error);
   }
   detail::FilterArith a;
