@@ -6,9 +6,13 @@
 // another perturbation order may help, paper §6).
 #pragma once
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <map>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -68,6 +72,78 @@ void for_each_part(std::size_t n, unsigned threads, Body&& body) {
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
 }
+
+// Threads kept for many small jobs: the deletion pass works out thousands of vertex deletions of a
+// fraction of a millisecond each, where starting a thread per batch would cost as much as the work.
+// run(n, job) calls job(i) once for every i in [0, n), spread over the helpers and the calling
+// thread, and returns when all are done. `job` must not throw. Ties the helpers' predicates decide
+// by the perturbation are credited to the calling thread, as for_each_part() does.
+class WorkerPool {
+ public:
+  explicit WorkerPool(unsigned helpers) {
+    for (unsigned k = 0; k < helpers; ++k) helpers_.emplace_back([this] { serve(); });
+  }
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+  ~WorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : helpers_) t.join();
+  }
+
+  void run(std::size_t n, const std::function<void(std::size_t)>& job) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      job_ = &job;
+      n_ = n;
+      next_ = 0;
+      busy_ = helpers_.size();
+      ties_ = 0;
+      ++generation_;
+    }
+    wake_.notify_all();
+    take_jobs();
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return busy_ == 0; });
+    job_ = nullptr;
+    predicates::add_perturbation_ties_on_this_thread(ties_);
+  }
+
+ private:
+  void take_jobs() {
+    for (std::size_t i; (i = next_.fetch_add(1)) < n_;) (*job_)(i);
+  }
+  void serve() {
+    uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+      lock.unlock();
+      const uint64_t before = predicates::perturbation_ties_on_this_thread();
+      take_jobs();
+      const uint64_t ties = predicates::perturbation_ties_on_this_thread() - before;
+      lock.lock();
+      ties_ += ties;
+      if (--busy_ == 0) done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> helpers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  bool stopping_ = false;
+  uint64_t generation_ = 0;
+  const std::function<void(std::size_t)>* job_ = nullptr;
+  std::size_t n_ = 0;
+  std::atomic<std::size_t> next_{0};
+  std::size_t busy_ = 0;
+  uint64_t ties_ = 0;
+};
 
 // Appends what a later part found to what the earlier parts found, as one scan in order would have
 // listed it: `items` keeps the first `limit` of each kind, `counts` counts them all. `kind_of(item)`

@@ -7,10 +7,12 @@
 // Steiner points of a PLC that has no CDT without them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "brute_force_cdt.h"
 #include "random_plc.h"
@@ -380,4 +382,75 @@ TEST(EditableCdt, RefusesCornersAndUnknownVertices) {
   EXPECT_THROW(mesh.remove_vertex(0), VertexRemovalError);   // a corner
   EXPECT_THROW(mesh.remove_vertex(99), VertexRemovalError);  // no such vertex
   EXPECT_EQ(mesh.num_vertices(), 8u);
+}
+
+// remove_vertex() in two steps (plan_removal, commit_removal): every Steiner point of a refined
+// PLC is planned at once on the first state, on two threads, then the plans are committed in some
+// order. Each commit must do what remove_vertex() does in that order on a second copy — the same
+// vertices deleted or refused, with the same neighbours, and the same CDT in the end — although
+// most plans were made before earlier commits changed their stars or the simplices next to them
+// (those are worked out again; the others are used as made).
+TEST(EditableCdt, PlansCommittedInOrderAgreeWithRemoveVertex) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 5; ++fin) {
+    xs.push_back(xs.back() + 0.02);  // thin fins: many Steiner points, many of them deletable
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2);
+  }
+  const Plc<3> comb = fixtures::extruded_columns(xs, tops, 1.0);
+  Options options;
+  options.steiner = SteinerMode::Auto;
+  options.remove_steiner_points = false;
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(comb, options, &refined);
+  const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
+  ASSERT_GT(end - first, 50u);
+
+  std::vector<uint32_t> order;
+  for (uint32_t v = end; v-- > first;) order.push_back(v);  // last added first, as the deletion pass goes
+  for (const std::string how : {"last first", "first first", "shuffled"}) {
+    if (how == "first first") std::reverse(order.begin(), order.end());
+    if (how == "shuffled") std::shuffle(order.begin(), order.end(), std::mt19937_64(5));
+    EditableCdt<3> planned(refined, tri), stepped(refined, tri);
+    std::vector<EditableCdt<3>::Removal> plans(end - first);
+    std::thread helper([&] {
+      for (uint32_t v = first + 1; v < end; v += 2) plans[v - first] = planned.plan_removal(v);
+    });
+    for (uint32_t v = first; v < end; v += 2) plans[v - first] = planned.plan_removal(v);
+    helper.join();
+
+    int deleted = 0;
+    for (uint32_t v : order) {
+      std::string outcome_planned = "deleted", outcome_stepped = "deleted";
+      std::vector<uint32_t> neighbours_planned, neighbours_stepped;
+      try {
+        neighbours_planned = planned.commit_removal(std::move(plans[v - first]));
+      } catch (const Error& e) {
+        outcome_planned = e.what();
+      }
+      try {
+        neighbours_stepped = stepped.remove_vertex(v);
+        ++deleted;
+      } catch (const Error& e) {
+        outcome_stepped = e.what();
+      }
+      ASSERT_EQ(outcome_planned, outcome_stepped) << how << ", vertex " << v;
+      ASSERT_EQ(neighbours_planned, neighbours_stepped) << how << ", vertex " << v;
+      const auto a = planned.snapshot(), b = stepped.snapshot();  // the neighbour links too, after every step
+      ASSERT_EQ(a.triangulation.neighbors, b.triangulation.neighbors) << how << ", vertex " << v;
+    }
+    const auto a = planned.snapshot(), b = stepped.snapshot();
+    EXPECT_EQ(a.triangulation.simplices, b.triangulation.simplices) << how;
+    EXPECT_EQ(a.triangulation.neighbors, b.triangulation.neighbors) << how;
+    EXPECT_EQ(a.plc.simplices, b.plc.simplices) << how;
+    const auto report = validate_triangulated(a.triangulation, a.plc);
+    EXPECT_TRUE(report.ok()) << how << "\n" << report.summary();
+    std::cout << "[ plans ] " << how << ": " << end - first << " Steiner points, " << deleted << " deleted, "
+              << planned.plans_redone() << " plans worked out again\n";
+    EXPECT_GT(deleted, 10) << how;
+    EXPECT_GT(planned.plans_redone(), 0u) << how << ": no stale plan, working a plan out again is not exercised";
+    EXPECT_LT(planned.plans_redone(), static_cast<uint64_t>(end - first)) << how << ": every plan stale, using one as made is not exercised";
+    EXPECT_THROW(planned.commit_removal(std::move(plans[0])), std::invalid_argument) << how;  // committed already
+  }
 }

@@ -112,6 +112,32 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
   }
 }
 
+// The deletion pass (remove_steiner.h) works deletions out on several threads and applies them in
+// the order of one: the same points deleted, the same tetrahedra in the same order.
+TEST(Parallel, SteinerPointsDeletedAsOneThreadDeletesThem) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 12; ++fin) {
+    xs.push_back(xs.back() + 0.02);  // thin fins: many Steiner points, many of them deleted again
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  const Plc<3> fins = fixtures::extruded_columns(xs, tops, 1.0);
+  Options one = mesh_defaults(), many = mesh_defaults();
+  one.threads = 1;
+  many.threads = kMany;
+  CdtStatistics stats_one, stats_many;
+  one.statistics = &stats_one;
+  many.statistics = &stats_many;
+  const Triangulation<3> a = cdt(fins, one), b = cdt(fins, many);
+  ASSERT_GT(stats_one.steiner_points_removed, 20u);
+  EXPECT_EQ(stats_many.steiner_points_removed, stats_one.steiner_points_removed);
+  EXPECT_EQ(b.points, a.points);
+  EXPECT_EQ(b.steiner_on, a.steiner_on);
+  EXPECT_EQ(b.simplices, a.simplices);
+  EXPECT_EQ(b.regions, a.regions);
+}
+
 // A part that throws: the error reaches the caller after every part ended.
 TEST(Parallel, AnExceptionInAPartReachesTheCaller) {
   std::vector<int> done(4 * detail::kItemsPerThread, 0);

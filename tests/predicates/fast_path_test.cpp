@@ -1,4 +1,4 @@
-// The exact-zero fast paths of the predicates (orientation.cpp: equal points; ray_box.cpp: a zero
+// The exact-zero fast paths of the predicates (orientation.cpp: equal points, collinear triples; ray_box.cpp: a zero
 // factor in both products of the slab comparison) and the sign-magnitude fixed-width exact stage
 // (wide_int.h), against the rational reference, on inputs built to hit them and to sit just beside
 // them: exact zeros, 1-ulp neighbours, huge, tiny and subnormal magnitudes.
@@ -68,6 +68,41 @@ void equal_points_case() {
 
 TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
 TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
+
+// Three of orient3's four points on one line (orientation.cpp's collinear fast path): c = a + t (b - a)
+// with t of few bits, as Steiner points split segments, on float-like and grid coordinates — exactly
+// collinear where the arithmetic was exact, not quite where it rounded — and c moved by one ulp
+// (not collinear: the products of the cross product then differ, often only in their remainders),
+// in every position among the four, at every scale (where tiny or huge differences make the fast
+// path stand aside), against the rational reference.
+TEST(FastPath, CollinearTriplesOrient3) {
+  Rng rng(0xc0111);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  for (int n = 0; n < 3000; ++n) {
+    std::array<Point<3>, 5> pts;
+    for (auto& p : pts)
+      for (int k = 0; k < 3; ++k) p[k] = n % 2 ? static_cast<float>(uniform(rng, -100.0, 100.0)) : uniform_int(rng, -8, 8);
+    const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
+    for (int k = 0; k < 3; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
+    if (n % 3 == 1) pts[2][n % 7 % 3] = std::nextafter(pts[2][n % 7 % 3], 1e300);
+    if (n % 3 == 2) pts[2][n % 5 % 3] = std::nextafter(pts[2][n % 5 % 3], -1e300);
+    if (n % 4 == 3) {  // b - a = (1, 3, 0), c - a = (x, fl(3x), 0): the products 3x and fl(3x) differ only below rounding
+      const double x = 1 + uniform_int(rng, 0, 1 << 20) * 0x1p-51 + 0x1p-52;
+      pts[0] = {0, 0, 0};
+      pts[1] = {1, 3, 0};
+      pts[2] = {x, 3 * x, 0};
+    }
+    std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);  // the triple anywhere among the four
+    std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);
+    const double s = kScales[n % std::size(kScales)];
+    for (auto& p : pts) p = scaled<3>(p, s);
+    check_orient_insphere<3>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 6) << "too few exact zeros: " << zeros << " of " << cases;
+}
 
 // Coordinates whose binary range exceeds 62 bits — CAD parts put 50.0 beside rounding residues such
 // as 3.67e-15 (r cos 90 degrees) — go to the fixed-width stage as multi-limb integers (ShiftedArith in

@@ -63,6 +63,36 @@ class EditableCdt {
   // walk every star twice (most attempts are refused).
   std::vector<uint32_t> remove_vertex(uint32_t v);
 
+  // remove_vertex() in two steps, so that deletions can be worked out on several threads at once.
+  // plan_removal(v) works out v's deletion — or the error it meets — without changing anything;
+  // plans may be made concurrently, but never while a commit runs. commit_removal() applies a plan
+  // (or throws its error, unchanged, as remove_vertex() would), after working it out again if a
+  // commit since it was made changed a simplex it read. So plans committed in some order give
+  // exactly what remove_vertex() in that order gives, whatever threads made them.
+  class Removal {
+   public:
+    Removal();
+    Removal(Removal&&) noexcept;
+    Removal& operator=(Removal&&) noexcept;
+    ~Removal();
+
+   private:
+    friend class EditableCdt;
+    struct Plan;
+    std::unique_ptr<Plan> plan_;
+  };
+  Removal plan_removal(uint32_t v) const;
+  std::vector<uint32_t> commit_removal(Removal&& removal);
+  // The same without throwing what a refused deletion met: false for NoCdtError and
+  // VertexRemovalError (other errors are thrown), else true with the neighbours in `neighbours`. For
+  // a caller that expects most deletions to be refused (unwinding costs as much as a small star).
+  bool try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours);
+  // Whether commit_removal() would use `removal` as it is (false for an empty one): no commit since
+  // it was made changed what it read.
+  bool plan_is_current(const Removal& removal) const;
+  // Commits so far that had to work their plan out again (for tests and measurements).
+  uint64_t plans_redone() const;
+
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)
   std::size_t num_vertices() const;   // vertices left

@@ -6,6 +6,8 @@
 #include "sweepcdt/editable_cdt.h"
 
 #include <algorithm>
+#include <exception>
+#include <stdexcept>
 #include <map>
 #include <optional>
 #include <string>
@@ -54,6 +56,11 @@ struct EditableCdt<D>::Impl {
   std::unordered_map<Key, uint32_t, TupleHash> constraint_of;
   std::vector<RegionSeed<D>> region_seeds;
 
+  // --- plans (EditableCdt::plan_removal) ---
+  uint64_t commits = 0;              // deletions applied so far
+  std::vector<uint64_t> changed_at;  // per simplex slot: the commit that last changed it (0: none)
+  uint64_t redone = 0;               // plans worked out again because a commit changed what they read
+
   const double* point(uint32_t v) const { return points.data() + std::size_t{v} * D; }
   uint32_t order(uint32_t v) const { return rank.empty() ? v : rank[v]; }
   predicates::Vertex vertex(uint32_t v) const { return {point(v), order(v)}; }
@@ -99,6 +106,7 @@ struct EditableCdt<D>::Impl {
     alive.assign(n, 0);
     simplex_at.assign(n, kNone);
     constraints_at.resize(n);
+    changed_at.assign(live_simplices, 0);
     for (uint32_t t = 0; t < live_simplices; ++t)
       for (int i = 0; i <= D; ++i) {
         const uint32_t v = simplex(t)[i];
@@ -163,10 +171,77 @@ struct EditableCdt<D>::Impl {
     ExteriorSide plc_side;  // its notation in the PLC
     uint32_t tag;
   };
-  std::vector<uint32_t> remove_vertex(uint32_t v) {
+  // A deletion worked out and not yet applied (EditableCdt::Removal), or the error it met.
+  struct Plan {
+    uint32_t v = kNone;
+    uint64_t epoch = 0;             // `commits` when it was made
+    // The slots of v's star. A plan also reads the simplices across the star's faces, but a commit
+    // that changes one of those changes (its neighbour link to) the star simplex beside it too.
+    std::vector<uint32_t> read;
+    bool read_beyond = false;       // v on the hull: its checks walked further
+    std::exception_ptr error;
+    bool refused = false;  // the error is NoCdtError or VertexRemovalError
+    std::vector<uint32_t> star, through, ids;
+    Triangulation<D> fill;
+    std::vector<LinkFace> link;
+    std::vector<NewConstraint> added;
+  };
+
+  // Reads only: plans of several vertices may be made at once (commits change what they read).
+  Plan plan(uint32_t v) const {
+    Plan p;
+    p.v = v;
+    p.epoch = commits;
+    try {
+      work_out(p);
+    } catch (const NoCdtError&) {
+      p.error = std::current_exception();
+      p.refused = true;
+    } catch (const VertexRemovalError&) {
+      p.error = std::current_exception();
+      p.refused = true;
+    } catch (...) {
+      p.error = std::current_exception();
+    }
+    return p;
+  }
+
+  // A commit since p was made changed a simplex p read (or may have: p walked beyond its star, or
+  // the triangulation is nearly empty, where the vertex count decides).
+  bool stale(const Plan& p) const {
+    if (p.epoch == commits) return false;
+    if (p.read_beyond || p.read.empty() || live_vertices <= D + 2) return true;
+    return std::any_of(p.read.begin(), p.read.end(), [&](uint32_t t) { return changed_at[t] > p.epoch; });
+  }
+
+  // Applies p, worked out again first if stale: false when the deletion is refused (NoCdtError,
+  // VertexRemovalError) and `throw_refusal` is off, else v's former neighbours in `neighbours`.
+  bool apply(Plan p, std::vector<uint32_t>& neighbours, bool throw_refusal) {
+    if (stale(p)) {
+      ++redone;
+      p = plan(p.v);
+    }
+    if (p.refused && !throw_refusal) return false;
+    if (p.error) std::rethrow_exception(p.error);
+    commit(p.v, p.star, p.through, p.fill, p.link, p.added);
+    std::sort(p.ids.begin(), p.ids.end());  // ascending, as neighbours() lists them
+    neighbours = std::move(p.ids);
+    return true;
+  }
+  std::vector<uint32_t> apply(Plan p) {
+    std::vector<uint32_t> neighbours;
+    apply(std::move(p), neighbours, true);
+    return neighbours;
+  }
+
+  std::vector<uint32_t> remove_vertex(uint32_t v) { return apply(plan(v)); }
+
+  void work_out(Plan& p) const {
+    const uint32_t v = p.v;
     require_vertex(v);
     if (live_vertices <= D + 1) throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the triangulation would be empty");
     const std::vector<uint32_t> star = star_of(v);
+    p.read = star;
 
     // Boundary faces through v that are no constraints: v is on a convex-hull domain's boundary, and
     // the cavity is open there (paper §5: the algorithm "works correctly even if v lies on the
@@ -177,6 +252,7 @@ struct EditableCdt<D>::Impl {
         if (simplex(t)[i] != v && neighbors[std::size_t{t} * (D + 1) + i] == kNone && !constraint_of.count(sorted(facet(t, i))))
           on_hull = true;
 
+    p.read_beyond = on_hull;
     // The facets through v, each without v (the paper's recursion).
     const std::vector<uint32_t> through = live_constraints_at(v);
     const auto sheets = sheets_through(v, through);
@@ -249,9 +325,12 @@ struct EditableCdt<D>::Impl {
       check_new_hull(v, star, fill, link);
       require_link_vertices_kept(v, ids, fill, link);
     }
-    commit(v, star, through, fill, link, added);
-    std::sort(ids.begin(), ids.end());  // v's former neighbours, ascending as neighbours() lists them
-    return ids;
+    p.star = star;
+    p.through = through;
+    p.ids = std::move(ids);
+    p.fill = std::move(fill);
+    p.link = std::move(link);
+    p.added = std::move(added);
   }
 
   // --- a vertex on the convex hull ------------------------------------------------------------------
@@ -501,6 +580,7 @@ struct EditableCdt<D>::Impl {
       return t;
     }
     const uint32_t t = static_cast<uint32_t>(simplices.size() / (D + 1));
+    changed_at.push_back(0);
     simplices.resize(simplices.size() + D + 1);
     neighbors.resize(neighbors.size() + D + 1);
     if (!regions.empty()) regions.push_back(0);
@@ -509,7 +589,9 @@ struct EditableCdt<D>::Impl {
 
   void commit(uint32_t v, const std::vector<uint32_t>& star, const std::vector<uint32_t>& through, const Triangulation<D>& fill,
               const std::vector<LinkFace>& link, const std::vector<NewConstraint>& added) {
+    const uint64_t stamp = ++commits;
     for (uint32_t t : star) {
+      changed_at[t] = stamp;
       simplex(t)[0] = kNone;
       free_slots.push_back(t);
       --live_simplices;
@@ -530,6 +612,7 @@ struct EditableCdt<D>::Impl {
     link_of.sort();
     for (uint32_t t = 0; t < fill.num_simplices(); ++t) {
       const uint32_t g = slot[t];
+      changed_at[g] = stamp;
       std::copy_n(fill.simplex(t), D + 1, simplex(g));
       for (int i = 0; i <= D; ++i) {
         simplex_at[simplex(g)[i]] = g;
@@ -543,7 +626,7 @@ struct EditableCdt<D>::Impl {
         across = kNone;  // not on the link: a sheet's new simplex on the domain's boundary
         if (!f) continue;
         across = link[*f].across;
-        if (across != kNone) neighbors[across] = g * (D + 1) + i;
+        if (across != kNone) neighbors[across] = g * (D + 1) + i, changed_at[across / (D + 1)] = stamp;
         if (!regions.empty()) regions[g] = link[*f].region;
       }
     }
@@ -556,7 +639,7 @@ struct EditableCdt<D>::Impl {
     std::sort(in_fill.begin(), in_fill.end());
     for (const LinkFace& f : link) {
       if (f.across == kNone) continue;
-      if (!covered.contains(f.key)) neighbors[f.across] = kNone;
+      if (!covered.contains(f.key)) neighbors[f.across] = kNone, changed_at[f.across / (D + 1)] = stamp;
       // A vertex only outside the new simplices walks from the simplex outside (its old one may
       // have been a star slot, freed or reused).
       for (uint32_t w : f.key)
@@ -675,6 +758,46 @@ EditableCdt<D>::~EditableCdt() = default;
 template <int D>
 std::vector<uint32_t> EditableCdt<D>::remove_vertex(uint32_t v) {
   return impl_->remove_vertex(v);
+}
+template <int D>
+struct EditableCdt<D>::Removal::Plan : Impl::Plan {};
+template <int D>
+EditableCdt<D>::Removal::Removal() = default;
+template <int D>
+EditableCdt<D>::Removal::Removal(Removal&&) noexcept = default;
+template <int D>
+typename EditableCdt<D>::Removal& EditableCdt<D>::Removal::operator=(Removal&&) noexcept = default;
+template <int D>
+EditableCdt<D>::Removal::~Removal() = default;
+
+template <int D>
+typename EditableCdt<D>::Removal EditableCdt<D>::plan_removal(uint32_t v) const {
+  Removal r;
+  r.plan_ = std::make_unique<typename Removal::Plan>();
+  static_cast<typename Impl::Plan&>(*r.plan_) = impl_->plan(v);
+  return r;
+}
+template <int D>
+std::vector<uint32_t> EditableCdt<D>::commit_removal(Removal&& removal) {
+  if (!removal.plan_) throw std::invalid_argument("EditableCdt::commit_removal: an empty Removal (moved from, or committed already)");
+  typename Impl::Plan plan = std::move(*removal.plan_);
+  removal.plan_.reset();
+  return impl_->apply(std::move(plan));
+}
+template <int D>
+bool EditableCdt<D>::try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours) {
+  if (!removal.plan_) throw std::invalid_argument("EditableCdt::try_commit_removal: an empty Removal (moved from, or committed already)");
+  typename Impl::Plan plan = std::move(*removal.plan_);
+  removal.plan_.reset();
+  return impl_->apply(std::move(plan), neighbours, false);
+}
+template <int D>
+bool EditableCdt<D>::plan_is_current(const Removal& removal) const {
+  return removal.plan_ && !impl_->stale(*removal.plan_);
+}
+template <int D>
+uint64_t EditableCdt<D>::plans_redone() const {
+  return impl_->redone;
 }
 template <int D>
 bool EditableCdt<D>::has_vertex(uint32_t v) const {

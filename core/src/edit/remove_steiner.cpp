@@ -2,7 +2,9 @@
 #include "remove_steiner.h"
 
 #include <deque>
+#include <optional>
 
+#include "../parallel.h"
 #include "sweepcdt/editable_cdt.h"
 
 namespace sweepcdt::detail {
@@ -25,25 +27,50 @@ uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::ve
     if (w >= first && !queued[w - first] && children[w - first] == 0) queued[w - first] = 1, work.push_back(w);
   };
   for (uint32_t v = end; v-- > first;) enqueue(v);
+  // With several threads the deletions of the next points on the list are worked out at once
+  // (EditableCdt::plan_removal) and applied in list order, as long as the next plan is current; a
+  // plan that an earlier deletion made stale (it changed the plan's star) is worked out again with
+  // the next ones. So the result is one thread's, deletion by deletion. Most plans stay current:
+  // most attempts are refused, and refusals change nothing.
+  const unsigned threads = thread_count(options.threads);
+  std::optional<WorkerPool> pool;
+  if (threads > 1) pool.emplace(threads - 1);
+  // Enough plans to keep the threads busy, few enough that few go stale; one thread plans one.
+  const std::size_t batch = threads > 1 ? 4 * std::size_t{threads} : 1;
+  std::deque<EditableCdt<3>::Removal> plans;  // plans[i] for work[i]
+  std::vector<std::size_t> to_plan;
+  std::vector<uint32_t> neighbours;
+  const std::function<void(std::size_t)> plan = [&](std::size_t k) { plans[to_plan[k]] = mesh.plan_removal(work[to_plan[k]]); };
   uint64_t removed = 0, tried = 0;
   while (!work.empty()) {
-    const uint32_t v = work.front();
-    work.pop_front();
-    queued[v - first] = 0;
-    try {
-      const std::vector<uint32_t> neighbours = mesh.remove_vertex(v);
-      ++removed;
-      for (uint32_t parent : made_from[v - first])
-        if (parent >= first) --children[parent - first];
-      for (uint32_t w : neighbours) enqueue(w);
-      for (uint32_t parent : made_from[v - first]) enqueue(parent);
-    } catch (const NoCdtError&) {
-      // needed: the PLC without it has no CDT
-    } catch (const VertexRemovalError&) {
-      // a corner of a facet (a rounded point off its segment), or a junction of several facets
+    const std::size_t n = std::min(batch, work.size());
+    while (plans.size() < n) plans.emplace_back();
+    to_plan.clear();
+    for (std::size_t i = 0; i < n; ++i)
+      if (!mesh.plan_is_current(plans[i])) to_plan.push_back(i);
+    if (pool && to_plan.size() > 1) {
+      pool->run(to_plan.size(), plan);
+    } else {
+      for (std::size_t k = 0; k < to_plan.size(); ++k) plan(k);
     }
-    if (options.progress && (++tried & 255) == 0 && !options.progress({"removing Steiner points", tried, end - first}))
-      throw CancelledError();
+    do {
+      const uint32_t v = work.front();  // new entries go to the back: the planned ones stay in front
+      work.pop_front();
+      queued[v - first] = 0;
+      EditableCdt<3>::Removal removal = std::move(plans.front());
+      plans.pop_front();
+      // Refused when the PLC without v has no CDT (v is needed), or v is a corner of a facet (a
+      // rounded point off its segment) or a junction of several facets.
+      if (mesh.try_commit_removal(std::move(removal), neighbours)) {
+        ++removed;
+        for (uint32_t parent : made_from[v - first])
+          if (parent >= first) --children[parent - first];
+        for (uint32_t w : neighbours) enqueue(w);
+        for (uint32_t parent : made_from[v - first]) enqueue(parent);
+      }
+      if (options.progress && (++tried & 255) == 0 && !options.progress({"removing Steiner points", tried, end - first}))
+        throw CancelledError();
+    } while (!plans.empty() && mesh.plan_is_current(plans.front()));
   }
   EditableCdt<3>::Snapshot result = mesh.snapshot();
   tri = std::move(result.triangulation);

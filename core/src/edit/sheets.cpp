@@ -177,6 +177,8 @@ class SheetBuilder {
     if constexpr (D > 2) {
       const uint32_t c0 = sheet.constraints.front();
       const int axis = projection_axis(c0);
+      // The fill is oriented like c0 within the hyperplane: the same sign of the projected orientation.
+      const Sign want = projected_orient(std::vector<uint32_t>(through_v_[c0].begin(), through_v_[c0].end() - 1), through_v_[c0][D - 1], axis);
       std::vector<std::vector<uint32_t>> boundary;
       for (uint32_t c : sheet.constraints)
         for (int i = 0; i < D; ++i)
@@ -186,6 +188,17 @@ class SheetBuilder {
       for (const auto& r : boundary) ids.insert(ids.end(), r.begin(), r.end());
       std::sort(ids.begin(), ids.end(), [&](uint32_t x, uint32_t y) { return order_(x) < order_(y); });
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      // Half of the holes a Steiner point's deletion leaves in a facet are one triangle (the point
+      // had one neighbour inside the facet): that triangle is the hole's only triangulation, so no
+      // star CDT, validation or flips are needed. Its three sides are the hole's boundary, two of
+      // them edges of triangles through v, so it is not degenerate.
+      if constexpr (D == 3)
+        if (ids.size() == 3 && boundary.size() == 3 && boundary[0] != boundary[1] && boundary[0] != boundary[2] && boundary[1] != boundary[2]) {
+          std::array<uint32_t, D> s{ids[0], ids[1], ids[2]};
+          if (projected_orient({s[0], s[1]}, s[2], axis) != want) std::swap(s[0], s[1]);
+          sheet.fill.push_back(s);
+          return;
+        }
       std::map<uint32_t, uint32_t> local;
       Plc<D - 1> polytope;
       for (uint32_t x : ids) {
@@ -218,8 +231,6 @@ class SheetBuilder {
       } catch (const NoCdtError& e) {
         refuse(sheet, std::string("its facet has no CDT without it (") + e.what() + ")");
       }
-      // Oriented like c0 within the hyperplane: the same sign of the projected orientation.
-      const Sign want = projected_orient(std::vector<uint32_t>(through_v_[c0].begin(), through_v_[c0].end() - 1), through_v_[c0][D - 1], axis);
       for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
         std::array<uint32_t, D> s;
         for (int i = 0; i < D; ++i) s[i] = ids[tri.simplex(t)[i]];
