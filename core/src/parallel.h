@@ -89,6 +89,7 @@ class WorkerPool {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       stopping_ = true;
+      generation_.fetch_add(1);
     }
     wake_.notify_all();
     for (std::thread& t : helpers_) t.join();
@@ -102,34 +103,38 @@ class WorkerPool {
       next_ = 0;
       busy_ = helpers_.size();
       ties_ = 0;
-      ++generation_;
+      generation_.fetch_add(1);
     }
     wake_.notify_all();
     take_jobs();
+    // The jobs are a fraction of a millisecond: spin a little before sleeping on the condition.
+    for (int spin = 0; spin < kSpins && busy_.load() != 0; ++spin) std::this_thread::yield();
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return busy_ == 0; });
+    done_.wait(lock, [&] { return busy_.load() == 0; });
     job_ = nullptr;
     predicates::add_perturbation_ties_on_this_thread(ties_);
   }
 
  private:
+  static constexpr int kSpins = 2000;
   void take_jobs() {
     for (std::size_t i; (i = next_.fetch_add(1)) < n_;) (*job_)(i);
   }
   void serve() {
     uint64_t seen = 0;
-    std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      for (int spin = 0; spin < kSpins && generation_.load() == seen; ++spin) std::this_thread::yield();
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return generation_.load() != seen; });
       if (stopping_) return;
-      seen = generation_;
+      seen = generation_.load();
       lock.unlock();
       const uint64_t before = predicates::perturbation_ties_on_this_thread();
       take_jobs();
       const uint64_t ties = predicates::perturbation_ties_on_this_thread() - before;
       lock.lock();
       ties_ += ties;
-      if (--busy_ == 0) done_.notify_one();
+      if (busy_.fetch_sub(1) == 1) done_.notify_one();
     }
   }
 
@@ -137,11 +142,11 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   bool stopping_ = false;
-  uint64_t generation_ = 0;
+  std::atomic<uint64_t> generation_{0};
   const std::function<void(std::size_t)>* job_ = nullptr;
   std::size_t n_ = 0;
   std::atomic<std::size_t> next_{0};
-  std::size_t busy_ = 0;
+  std::atomic<std::size_t> busy_{0};
   uint64_t ties_ = 0;
 };
 

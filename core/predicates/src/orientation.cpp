@@ -73,8 +73,9 @@ inline bool has_equal_points(const std::array<const double*, N>& p, int dim) {
 // on CAD parts. The test is exact: the differences b - a and c - a must come out exact (Knuth's
 // TwoDiff error is zero), and then each component of their cross product is zero iff its two
 // products are equal exactly — compared as fl(x*y) and the exact remainder fma(x, y, -fl(x*y)),
-// which represent a product uniquely while nothing overflows or underflows: every nonzero difference
-// must lie in [2^-400, 2^400]. Anything else answers "not known", and the exact stage decides.
+// which represent a product uniquely while nothing overflows or underflows: every nonzero factor of
+// products found equal must lie in [2^-400, 2^400]. Anything else answers "not known", and the exact
+// stage decides.
 inline bool exact_difference(double a, double b, double& d) {
   d = a - b;
   const double b_virtual = a - d, a_virtual = d + b_virtual;
@@ -84,21 +85,44 @@ inline bool safe_factor(double x) {
   const double m = std::fabs(x);
   return x == 0 || (m >= 0x1p-400 && m <= 0x1p400);
 }
-inline bool products_equal(double x, double y, double u, double w) {  // x y == u w, exactly
+// x y == u w, exactly. Only a "yes" needs the range check (under- or overflow can make different
+// products look alike), so most calls, which say no, skip it.
+inline bool products_equal(double x, double y, double u, double w) {
   const double p = x * y, q = u * w;
-  return p == q && std::fma(x, y, -p) == std::fma(u, w, -q);
+  if (p != q || std::fma(x, y, -p) != std::fma(u, w, -q)) return false;
+  return safe_factor(x) && safe_factor(y) && safe_factor(u) && safe_factor(w);
 }
+// Whether u x w is clearly not zero in floating point: a component whose rounded value exceeds the
+// error it could have if it were zero — the rounded products put at most about 3 units of roundoff
+// of each product into it (8 allowed), an absolute term stays far above underflow, NaN says
+// nothing. A "clearly" that rounded differences got wrong only skips the fast path, never a sign.
+inline bool cross_clearly_nonzero(const double* u, const double* w) {
+  const auto component = [](double x, double y, double s, double t) {
+    const double p = x * y, q = s * t;
+    return std::fabs(p - q) > 8 * detail::kUnitRoundoff * (std::fabs(p) + std::fabs(q)) + 0x1p-400;
+  };
+  return component(u[1], w[2], u[2], w[1]) || component(u[2], w[0], u[0], w[2]) || component(u[0], w[1], u[1], w[0]);
+}
+// a, b, c exactly on one line: exact differences, then exactly equal products.
 inline bool exactly_collinear(const double* a, const double* b, const double* c) {
   double u[3], w[3];
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 3; ++k)
     if (!exact_difference(b[k], a[k], u[k]) || !exact_difference(c[k], a[k], w[k])) return false;
-    if (!safe_factor(u[k]) || !safe_factor(w[k])) return false;
-  }
   return products_equal(u[1], w[2], u[2], w[1]) && products_equal(u[2], w[0], u[0], w[2]) && products_equal(u[0], w[1], u[1], w[0]);
 }
+// Most calls have no collinear triple, and floating point says so for each of the four at once:
+// the differences from p0 are shared by three of them.
 inline bool has_collinear_triple(const Coords<4>& p) {
-  return exactly_collinear(p[0], p[1], p[2]) || exactly_collinear(p[0], p[1], p[3]) || exactly_collinear(p[0], p[2], p[3]) ||
-         exactly_collinear(p[1], p[2], p[3]);
+  double d[3][3], e[2][3];
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) d[i][k] = p[i + 1][k] - p[0][k];
+    e[0][k] = p[2][k] - p[1][k];
+    e[1][k] = p[3][k] - p[1][k];
+  }
+  return (!cross_clearly_nonzero(d[0], d[1]) && exactly_collinear(p[0], p[1], p[2])) ||
+         (!cross_clearly_nonzero(d[0], d[2]) && exactly_collinear(p[0], p[1], p[3])) ||
+         (!cross_clearly_nonzero(d[1], d[2]) && exactly_collinear(p[0], p[2], p[3])) ||
+         (!cross_clearly_nonzero(e[0], e[1]) && exactly_collinear(p[1], p[2], p[3]));
 }
 
 inline bool admissible(double max_abs_difference) {
