@@ -156,8 +156,11 @@ struct EditableCdt<D>::Impl {
     return star;
   }
 
+  static NoCdtError no_cdt_error(uint32_t v, const std::string& why, std::vector<uint32_t> witness) {
+    return NoCdtError("deleting vertex " + std::to_string(v) + " leaves a PLC without a CDT: " + why, std::move(witness));
+  }
   [[noreturn]] void no_cdt(uint32_t v, const std::string& why, std::vector<uint32_t> witness) const {
-    throw NoCdtError("deleting vertex " + std::to_string(v) + " leaves a PLC without a CDT: " + why, std::move(witness));
+    throw no_cdt_error(v, why, std::move(witness));
   }
 
   // --- deletion -----------------------------------------------------------------------------------
@@ -301,14 +304,24 @@ struct EditableCdt<D>::Impl {
     Triangulation<D> fill;
     std::array<double, D> centre;
     std::copy_n(point(v), D, centre.begin());
+    // The sweep's error in the vertex ids of the whole.
+    const auto cavity_error = [&](const NoCdtError& e) {
+      std::vector<uint32_t> witness;
+      for (uint32_t x : e.witness()) witness.push_back(x < ids.size() ? ids[x] : x);
+      return no_cdt_error(v, e.what(), std::move(witness));
+    };
+    std::optional<NoCdtError> failed;  // most refusals: reported without unwinding
     try {
       std::array<double, D> inside;
       if (on_hull) inside = point_inside_hull_left(v, star);
-      fill = detail::star_sweep_cdt<D>(cavity, centre, Options{}, stats, on_hull, on_hull ? &inside : nullptr);
+      fill = detail::star_sweep_cdt<D>(cavity, centre, Options{}, stats, on_hull, on_hull ? &inside : nullptr, &failed);
     } catch (const NoCdtError& e) {
-      std::vector<uint32_t> witness;
-      for (uint32_t x : e.witness()) witness.push_back(x < ids.size() ? ids[x] : x);
-      no_cdt(v, e.what(), witness);
+      throw cavity_error(e);
+    }
+    if (failed) {
+      p.error = std::make_exception_ptr(cavity_error(*failed));
+      p.refused = true;
+      return;
     }
     compute_neighbors(fill);
     if (on_hull && fill.num_simplices() == 0 && live_simplices == star.size())

@@ -60,8 +60,8 @@ class Sweep {
 
  public:
   Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
-        const Options& options, CdtStatistics& stats, bool open = false)
-      : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats), open_(open),
+        const Options& options, CdtStatistics& stats, bool open = false, std::optional<NoCdtError>* failure = nullptr)
+      : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats), open_(open), failure_(failure),
         drop_next_(plc.num_points(), kNone), reached_(plc.num_points(), 0), queue_(ItemOrder{this}) {}
 
   Triangulation<D> run() {
@@ -72,6 +72,7 @@ class Sweep {
     for (uint32_t f = 0; f < faces_.size(); ++f)
       if (!faces_[f].built_front) new_face(f);
     sweep();
+    if (failure_ && *failure_) return {};
     if (open_) return triangulation_of<D>(plc_, std::move(simplices_));  // the caller checks the sides
     require_domain_sides_built();
     if constexpr (kStar) require_inner_sides_built();
@@ -363,7 +364,7 @@ class Sweep {
 
   // --- the sweep ---------------------------------------------------------------------------------
   void sweep() {
-    while (!queue_.empty()) {
+    while (!queue_.empty() && !(failure_ && *failure_)) {
       const Item item = queue_.top();
       queue_.pop();
       ++stats_.queue_pops;
@@ -411,8 +412,12 @@ class Sweep {
         (where == Side::Front ? finished : behind).push_back(found);
         continue;
       }
-      if (where != Side::Behind)
-        no_cdt("simplex " + ids_text(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)", s.data(), D + 1);
+      if (where != Side::Behind) {
+        const std::string what = "simplex " + ids_text(s.data(), D + 1) + " is in front of a face built after it (Theorem 5 fails: no CDT)";
+        if (!failure_) no_cdt(what, s.data(), D + 1);
+        failure_->emplace("sweep: " + what, std::vector<uint32_t>(s.begin(), s.end()));
+        return;  // the sweep stops (sweep() sees the failure); what this simplex began is left half done
+      }
       const uint32_t h = add_face(key, front);
       faces_[h].built_behind = true;
       fresh.push_back(h);
@@ -477,6 +482,7 @@ class Sweep {
   const Options& options_;
   CdtStatistics& stats_;
   const bool open_;  // star sweep of a deleted hull vertex: constraints may stay without a simplex
+  std::optional<NoCdtError>* const failure_;  // where to report Theorem 5 failing instead of throwing
   std::vector<Face<D>> faces_;
   TupleMap<D> face_of_;
   TupleMap<D - 1> ridge_anchor_;
@@ -500,7 +506,8 @@ Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uin
 
 template <int D>
 Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
-                                CdtStatistics& stats, bool open, const std::array<double, D>* away) {
+                                CdtStatistics& stats, bool open, const std::array<double, D>* away,
+                                std::optional<NoCdtError>* failure) {
   // Ties (faces through the centre p, equal powers) are broken as if p were moved infinitesimally
   // away from `away` (a point inside the domain, when p is on its hull), then toward q_2, q_3, ...:
   // p with its coordinate k-2 changed, so that they are affinely independent. Inside the polytope
@@ -512,17 +519,17 @@ Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& 
   points[1] = away ? *away : points[2];
   if (away) frame.toward[1] = -1;
   for (int k = 0; k < D + 2; ++k) frame.centre[k] = points[k].data();
-  return Sweep<D, predicates::StarSweep<D>>(plc, frame, std::nullopt, options, stats, open).run();
+  return Sweep<D, predicates::StarSweep<D>>(plc, frame, std::nullopt, options, stats, open, failure).run();
 }
 
 template Triangulation<2> star_sweep_cdt<2>(const Plc<2>&, const std::array<double, 2>&, const Options&, CdtStatistics&, bool,
-                                             const std::array<double, 2>*);
+                                             const std::array<double, 2>*, std::optional<NoCdtError>*);
 template Triangulation<3> star_sweep_cdt<3>(const Plc<3>&, const std::array<double, 3>&, const Options&, CdtStatistics&, bool,
-                                             const std::array<double, 3>*);
+                                             const std::array<double, 3>*, std::optional<NoCdtError>*);
 template Triangulation<4> star_sweep_cdt<4>(const Plc<4>&, const std::array<double, 4>&, const Options&, CdtStatistics&, bool,
-                                             const std::array<double, 4>*);
+                                             const std::array<double, 4>*, std::optional<NoCdtError>*);
 template Triangulation<5> star_sweep_cdt<5>(const Plc<5>&, const std::array<double, 5>&, const Options&, CdtStatistics&, bool,
-                                             const std::array<double, 5>*);
+                                             const std::array<double, 5>*, std::optional<NoCdtError>*);
 template Triangulation<2> sweep_cdt<2>(const Plc<2>&, const std::optional<std::array<uint32_t, 3>>&, const Options&, CdtStatistics&);
 template Triangulation<3> sweep_cdt<3>(const Plc<3>&, const std::optional<std::array<uint32_t, 4>>&, const Options&, CdtStatistics&);
 template Triangulation<4> sweep_cdt<4>(const Plc<4>&, const std::optional<std::array<uint32_t, 5>>&, const Options&, CdtStatistics&);

@@ -18,9 +18,13 @@ Triangulation<D> sweep_cdt(const Plc<D>& plc, const std::optional<std::array<uin
 // polytope is the link of a vertex on the convex hull (paper §5: "works correctly even if v lies on
 // the boundary of the CDT"); its constraints need not all get a simplex, the caller checks the result.
 // `away`: a point strictly inside the domain left; the centre is perturbed away from it, so that new
-// hull faces through the centre have their simplices behind them.
+// hull faces through the centre have their simplices behind them. `failure`: when given, the
+// commonest way of finding no CDT — a simplex in front of a face built after it (Theorem 5) — is
+// stored there and an empty triangulation returned instead of thrown (vertex deletion meets it in
+// most refused attempts, where unwinding cost as much as a small star); other failures still throw.
 template <int D>
 Triangulation<D> star_sweep_cdt(const Plc<D>& plc, const std::array<double, D>& centre, const Options& options,
-                                CdtStatistics& stats, bool open = false, const std::array<double, D>* away = nullptr);
+                                CdtStatistics& stats, bool open = false, const std::array<double, D>* away = nullptr,
+                                std::optional<NoCdtError>* failure = nullptr);
 
 }  // namespace sweepcdt::detail
