@@ -5,6 +5,7 @@
 //                      [--count-only]    (only the welded counts, and the OFF file: bench/run_cad.py)
 //                      [--cad-noise F]   (first move coordinates by a few ulps with probability F:
 //                                         tests/support/cad_noise.h, seed 1, as the tests do)
+//                      [--threads N]     (Options::threads; default 0, every hardware thread)
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -19,7 +20,7 @@ using namespace sweepcdt;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s FILE [--facets triangles|coplanar] [--steiner auto|none] [--algorithm A] [--off PATH] [--threads N]\n", argv[0]);
     return 2;
   }
   Options options;
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
       options.algorithm = value == "giftwrap" ? Algorithm::GiftWrap : value == "sweep-plane" ? Algorithm::SweepPlane : Algorithm::SweepSphere;
     else if (flag == "--off") off = value;
     else if (flag == "--cad-noise") noise = std::stod(value);
+    else if (flag == "--threads") options.threads = static_cast<unsigned>(std::stoul(value));
   }
   Plc<3> plc = io::import_plc(argv[1]);
   if (noise > 0) plc = testing::with_cad_noise(std::move(plc), noise, 1);
