@@ -113,6 +113,7 @@ class EditableCdt {
 
  private:
   struct Impl;
+  static std::unique_ptr<typename Removal::Plan> take(Removal& removal);  // leaves it empty; throws if it was
   std::unique_ptr<Impl> impl_;
 };
 

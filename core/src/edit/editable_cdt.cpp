@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <exception>
-#include <stdexcept>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -791,18 +791,19 @@ typename EditableCdt<D>::Removal EditableCdt<D>::plan_removal(uint32_t v) const 
   return r;
 }
 template <int D>
+std::unique_ptr<typename EditableCdt<D>::Removal::Plan> EditableCdt<D>::take(Removal& removal) {
+  if (!removal.plan_) throw std::invalid_argument("EditableCdt: committing an empty Removal (moved from, or committed already)");
+  return std::move(removal.plan_);
+}
+template <int D>
 std::vector<uint32_t> EditableCdt<D>::commit_removal(Removal&& removal) {
-  if (!removal.plan_) throw std::invalid_argument("EditableCdt::commit_removal: an empty Removal (moved from, or committed already)");
-  typename Impl::Plan plan = std::move(*removal.plan_);
-  removal.plan_.reset();
-  return impl_->apply(std::move(plan));
+  std::vector<uint32_t> neighbours;
+  impl_->apply(std::move(*take(removal)), neighbours, true);
+  return neighbours;
 }
 template <int D>
 bool EditableCdt<D>::try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours) {
-  if (!removal.plan_) throw std::invalid_argument("EditableCdt::try_commit_removal: an empty Removal (moved from, or committed already)");
-  typename Impl::Plan plan = std::move(*removal.plan_);
-  removal.plan_.reset();
-  return impl_->apply(std::move(plan), neighbours, false);
+  return impl_->apply(std::move(*take(removal)), neighbours, false);
 }
 template <int D>
 bool EditableCdt<D>::plan_is_current(const Removal& removal) const {

@@ -9,10 +9,6 @@
 
 namespace sweepcdt::detail {
 
-// Below this many Steiner points the threads' waiting for each other and the plans gone stale cost
-// more than a second thread gains (box_fused_sphere_fine.stl: 509 points, 12% slower on two).
-constexpr uint32_t kPointsForThreads = 1024;
-
 uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
                                const Options& options) {
   const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
