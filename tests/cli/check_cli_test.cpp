@@ -130,7 +130,7 @@ TEST(CliCheck, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   const CliRun r = check(input, tampered, dir);
   EXPECT_EQ(r.exit_code, 6) << r.out;
   EXPECT_TRUE(r.says("Steiner point 6 (")) << r.out;
-  EXPECT_TRUE(r.says("is not a rounded point between two neighbouring points on a facet's boundary edge, nor between two points of one facet")) << r.out;
+  EXPECT_TRUE(r.says("is not a rounded point of the segment of a facet's boundary edge, nor between two points of one facet")) << r.out;
 }
 
 // A box with a box-shaped cavity (given outward: the importer reverses it) and a body inside the
@@ -302,7 +302,7 @@ TEST(CliCheck, CoplanarCheckRejectsTamperedMeshes) {
   {
     io::VolumeMesh m = mesh;
     m.points[3 * n] += 1e-9, m.points[3 * n + 1] -= 2e-9, m.points[3 * n + 2] += 3e-9;  // off its edge, not along it
-    rejects(m, {"Steiner point " + std::to_string(n) + " (", "is not a rounded point between two neighbouring points on a facet's boundary edge, nor between two points of one facet"});
+    rejects(m, {"Steiner point " + std::to_string(n) + " (", "is not a rounded point of the segment of a facet's boundary edge, nor between two points of one facet"});
   }
   {
     io::VolumeMesh m = mesh;

@@ -7,8 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 
+#include <gmpxx.h>
+
+#include "cad_noise.h"
+#include "steiner/refine.h"
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/steiner_point.h"
@@ -244,4 +249,62 @@ TEST(Steiner, SplitPointThatRoundsOntoAnotherPoint) {
   for (uint32_t s = static_cast<uint32_t>(plc.num_points()); s < refined.num_points(); ++s)
     on_b_edge = on_b_edge || is_point_on_segment(plc.point(4), plc.point(5), refined.point(s));
   EXPECT_TRUE(on_b_edge) << "B's bottom edge is split";
+}
+
+namespace {
+
+// Whether v - u is exact in double in every coordinate, by rationals.
+bool difference_is_exact(const double* u, const double* v) {
+  for (int k = 0; k < 3; ++k)
+    if (mpq_class(v[k] - u[k]) != mpq_class(v[k]) - mpq_class(u[k])) return false;
+  return true;
+}
+
+}  // namespace
+
+// A point on a segment whose ends differ exactly in double is a rounded split of those two input
+// ends however deep refinement splits the segment (sweepcdt/steiner_point.h), so `sweepcdt check`
+// needs no other Steiner point to recognise it and the deletion pass may delete any of them. On a
+// segment whose difference rounds, a point is a split of the two points of the piece it splits.
+// Thin fins with CAD noise (a few ulps) give both kinds, and folds.
+TEST(Steiner, PointsOnASegmentAreSplitsOfItsInputEnds) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 4; ++fin) {
+    xs.push_back(xs.back() + 0.02);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  const detail::RefinedPlc r = detail::refine(fins, mesh_defaults());
+  const Plc<3>& refined = r.plc;
+  const uint32_t n = r.num_input_points;
+  std::set<std::pair<uint32_t, uint32_t>> edges;
+  for (std::size_t j = 0; j < fins.num_simplices(); ++j)
+    for (int i = 0; i < 3; ++i) edges.emplace(std::minmax(fins.simplex(j)[i], fins.simplex(j)[(i + 1) % 3]));
+  std::map<std::pair<uint32_t, uint32_t>, int> from_ends;  // input edge -> its points made from its ends
+  std::size_t from_pieces = 0, elsewhere = 0;
+  for (uint32_t s = n; s < refined.num_points(); ++s) {
+    const auto [a, b] = r.made_from[s - n];
+    ASSERT_TRUE(is_point_on_segment(refined.point(a), refined.point(b), refined.point(s))) << "point " << s << " is a split of " << a << " " << b;
+    if (a < n && b < n && edges.count(std::minmax(a, b))) {
+      ++from_ends[std::minmax(a, b)];
+      continue;
+    }
+    // Made from a Steiner point: on an input segment only if that segment's difference rounds;
+    // otherwise a fold point, inside a facet.
+    bool on_segment = false;
+    for (const auto& [u, v] : edges)
+      if (is_point_on_segment(fins.point(u), fins.point(v), refined.point(s))) {
+        on_segment = true;
+        EXPECT_FALSE(difference_is_exact(fins.point(u), fins.point(v))) << "point " << s << " on input edge " << u << " " << v << " made from " << a << " " << b;
+      }
+    ++(on_segment ? from_pieces : elsewhere);
+  }
+  int deepest = 0;
+  for (const auto& [edge, count] : from_ends) deepest = std::max(deepest, count);
+  std::printf("[ fins ] %zu Steiner points: %zu made from their input segment's ends (at most %d on one), %zu from a piece's ends, %zu elsewhere\n",
+              refined.num_points() - n, refined.num_points() - n - from_pieces - elsewhere, deepest, from_pieces, elsewhere);
+  EXPECT_GE(deepest, 4) << "a segment split again and again, each point from its input ends";
+  EXPECT_GT(from_pieces, 0u) << "segments whose difference rounds are split piece by piece";
 }

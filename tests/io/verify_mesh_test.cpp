@@ -156,7 +156,7 @@ TEST(VerifyMesh, SteinerPointsMustBeTheSplitPointsCdtMakes) {
   const MeshVerification v = verify_mesh(input, m, FacetMode::Coplanar);
   EXPECT_FALSE(v.validated);
   EXPECT_TRUE(says(v, "Steiner point 6 (")) << all(v);
-  EXPECT_TRUE(says(v, "is not a rounded point between two neighbouring points on a facet's boundary edge, nor between two points of one facet")) << all(v);
+  EXPECT_TRUE(says(v, "is not a rounded point of the segment of a facet's boundary edge, nor between two points of one facet")) << all(v);
 }
 
 // Tetrahedra of the nested boxes' cavity over the same points: each boundary triangle a piece of an

@@ -2,14 +2,23 @@
 // tools which check a mesh (`sweepcdt check`) can recognise a Steiner point exactly instead of
 // trusting a tolerance.
 //
-// Every Steiner point is the rounded point a + t (b - a) of the two points a, b it splits, computed
-// coordinate by coordinate in double arithmetic, operation for operation:
-//     out[k] = a[k] + t * (b[k] - a[k])          for some double t in (0, 1)
-// refine chooses t by the concentric-shell rule of Ruppert and Shewchuk: a segment with exactly one
-// input vertex v as an end is split at distance 2^k from v (the power of two nearest half its
-// length; t rounded to 20 bits, below), so subsegments that meet at v end on common spheres about
-// it; any other segment at its midpoint t = 1/2 (a being the end with the smaller point id). When that point coincides with an
-// existing one (two segments within rounding of each other), it takes t = 1/2, 1/4 or 3/4 instead.
+// Every Steiner point on a segment is the rounded point u + t (v - u) of the segment's two input
+// ends u, v (u the one with the smaller id), computed coordinate by coordinate in double arithmetic,
+// operation for operation:
+//     out[k] = u[k] + t * (v[k] - u[k])          for some double t in (0, 1)
+// — however often the segment was split before: refine keeps each point's t along its input
+// segment and splits a piece [ta, tb] of it at a t between (split_parameter below), so no point is
+// a rounding of other rounded points, and `check` needs no other Steiner point to recognise it (the
+// deletion pass may delete any of them). That holds when v - u is exact in double (always for
+// float32 coordinates; refine.cpp says why it matters); on other segments a point is the same
+// construction from the ends a, b of the piece it splits (0 and 1 their t), as it is inside a fold
+// (below). t follows the concentric-shell rule of Ruppert and
+// Shewchuk: a piece with exactly one input vertex as an end is split at distance 2^k from it (the
+// power of two nearest half its length; the distance rounded to 20 significant bits of the piece,
+// below), so pieces that meet at an input vertex end on common spheres about it; any other piece
+// at its middle. When that point coincides with an existing one (two segments within rounding of
+// each other), it takes a quarter or three quarters of the piece instead. A fold point (a point inside
+// a facet, refine.h) is the rounded point a + t (b - a) of the two points a, b of the fold it splits.
 // The recogniser below does not need to know which t: each coordinate is a monotone function of t,
 // so whether some t gives exactly the stored point is decided exactly by a search over the doubles
 // t. A point that passes lies on its segment up to the rounding of that one construction — no
@@ -26,21 +35,19 @@ inline void point_on_segment(const double* a, const double* b, double t, double*
 
 inline constexpr int kShellBits = 20;
 
-// The concentric-shell split point of the segment ab (above). `a_is_input`/`b_is_input`: whether
-// each end is an input vertex; for a midpoint the caller passes the end with the smaller id as `a`.
-inline void segment_split_point(const double* a, bool a_is_input, const double* b, bool b_is_input, double* out) {
-  if (a_is_input == b_is_input) return point_on_segment(a, b, 0.5, out);
-  const double* v = a_is_input ? a : b;
-  const double* w = a_is_input ? b : a;
-  double length2 = 0;
-  for (int k = 0; k < 3; ++k) length2 += (w[k] - v[k]) * (w[k] - v[k]);
-  const double length = std::sqrt(length2);
-  const double t = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
-  // t rounded to a multiple of 2^-kShellBits: a short t keeps the point exactly on the segment when
-  // the ends' coordinates have few significant bits (float32 surfaces: STL, glTF, Draco, PLY), and a
-  // point exactly on the segment makes no folds (refine.h). Shell radii then agree to 2^-20, which
-  // protects segments meeting at angles down to about a tenth of a degree.
-  point_on_segment(v, w, std::ldexp(std::round(std::ldexp(t, kShellBits)), -kShellBits), out);
+// The parameter at which refine splits the piece [ta, tb] (ta < tb) of a segment of length `length`
+// (above). `a_is_input`/`b_is_input`: whether the piece's end at ta/tb is an input vertex.
+inline double split_parameter(double ta, bool a_is_input, double tb, bool b_is_input, double length) {
+  if (a_is_input == b_is_input) return 0.5 * (ta + tb);
+  const double span = tb - ta;
+  const double radius = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(span * length / 2))));
+  // The distance rounded to a multiple of 2^-kShellBits of the piece: a short t keeps the point
+  // exactly on the segment when the ends' coordinates have few significant bits (float32 surfaces:
+  // STL, glTF, Draco, PLY), and a point exactly on the segment makes no folds (refine.h). Shell radii
+  // then agree to 2^-20, which protects segments meeting at angles down to about a tenth of a degree.
+  const double quantum = std::ldexp(1.0, std::ilogb(span) - kShellBits);
+  const double step = std::round(radius / length / quantum) * quantum;
+  return a_is_input ? ta + step : tb - step;
 }
 
 // Whether x == point_on_segment(a, b, t) for some double t in (0, 1), or the same from b to a, and x

@@ -174,6 +174,7 @@ class Refiner {
       const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
       points_.insert(points_.end(), x, x + 3);
       on_segment_.push_back({kNone, kNone});
+      parameter_.push_back(0.0);
       r_.steiner_on.push_back(kNone);  // set by split_triangles, as for a segment's point
       r_.made_from.push_back({a, b});
       touched[t1] = touched[t2] = 1;
@@ -218,37 +219,70 @@ class Refiner {
 
   void flip_facets() { r_.flips += flip_facets_to_cdt({points_, tris_, groups_.segments, on_segment_}); }
 
-  // The concentric-shell rule (refine.h): returns the new point's id.
+  // The concentric-shell rule (refine.h, sweepcdt/steiner_point.h): returns the new point's id. A
+  // point is made from its input segment's ends at its parameter along the segment when their
+  // difference is exact, else (and on a fold segment) from the ends of the piece it splits.
   uint32_t add_split_point(uint64_t key) {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+    const bool fold = fold_segments_.count(key) > 0;
+    const std::array<uint32_t, 2> segment = fold ? std::array<uint32_t, 2>{kNone, kNone} : input_segment_of(a, b);
+    const bool along_segment = !fold && exact_difference(p(segment[0]), p(segment[1]));
+    const std::array<uint32_t, 2> ends = along_segment ? segment : std::array<uint32_t, 2>{a, b};
+    double ta = along_segment ? parameter(a, segment) : 0.0, tb = along_segment ? parameter(b, segment) : 1.0;
+    bool a_input = is_input(a), b_input = is_input(b);
+    if (ta > tb) std::swap(ta, tb), std::swap(a_input, b_input);
+    const double* u = p(ends[0]);
+    const double* v = p(ends[1]);
+    const double length = std::sqrt((v[0] - u[0]) * (v[0] - u[0]) + (v[1] - u[1]) * (v[1] - u[1]) + (v[2] - u[2]) * (v[2] - u[2]));
+    double t = split_parameter(ta, a_input, tb, b_input, length);
     double x[3];
-    segment_split_point(p(a), is_input(a), p(b), is_input(b), x);  // a < b: edge_key sorts
+    point_on_segment(u, v, t, x);
     // Two segments that pass within rounding of each other can get the same rounded point (a smooth
     // 120k-triangle scan did, and the Delaunay triangulation then refused the duplicate): another
-    // point of the segment instead (`sweepcdt check` recognises any: sweepcdt/steiner_point.h).
-    for (const double t : {0.5, 0.25, 0.75})
-      if (coordinates_.count(key_of(x))) point_on_segment(p(a), p(b), t, x);
+    // point of the piece instead (`sweepcdt check` recognises any: sweepcdt/steiner_point.h).
+    for (const double f : {0.5, 0.25, 0.75})
+      if (coordinates_.count(key_of(x))) point_on_segment(u, v, t = ta + f * (tb - ta), x);
     if (coordinates_.count(key_of(x)))
       throw NoCdtError("Steiner points: a segment is too short to split in double precision", {a, b});
     coordinates_.insert(key_of(x));
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
-    const bool fold = fold_segments_.count(key) > 0;
-    if (fold)  // its halves are folds too; the point is inside the facet, on no input segment
-      on_segment_.push_back({kNone, kNone});
-    else
-      on_segment_.push_back(!is_input(a) ? on_segment_[a] : !is_input(b) ? on_segment_[b] : std::array<uint32_t, 2>{a, b});
+    on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
+    parameter_.push_back(along_segment ? t : 0.0);
     r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
-    r_.made_from.push_back({a, b});
+    r_.made_from.push_back(ends);
     groups_.segments.erase(key);
     groups_.segments.insert(edge_key(a, m));
     groups_.segments.insert(edge_key(m, b));
-    if (fold) {
+    if (fold) {  // its halves are folds too
       fold_segments_.erase(key);
       fold_segments_.insert(edge_key(a, m));
       fold_segments_.insert(edge_key(m, b));
     }
     return m;
+  }
+
+  // Whether v - u is exact in double in every coordinate (Knuth's TwoSum: the rounding error of
+  // the difference, itself exact). When it is not, the rounded points u + t (v - u) lie near a line
+  // that is not uv — one that can pass exactly through another vertex that uv misses, so that
+  // splitting never makes the segment Delaunay (Steiner.SplitPointThatRoundsOntoAnotherPoint).
+  static bool exact_difference(const double* u, const double* v) {
+    for (int k = 0; k < 3; ++k) {
+      const double d = v[k] - u[k], back = d - v[k];
+      if ((v[k] - (d - back)) + (-u[k] - back) != 0) return false;
+    }
+    return true;
+  }
+
+  // The input segment (its ends, the smaller id first) that the piece ab of a segment lies on.
+  std::array<uint32_t, 2> input_segment_of(uint32_t a, uint32_t b) const {
+    if (!is_input(a)) return on_segment_[a];
+    if (!is_input(b)) return on_segment_[b];
+    return {std::min(a, b), std::max(a, b)};
+  }
+  // Where point w of an input segment lies along it: 0 at its first end, 1 at its second.
+  double parameter(uint32_t w, const std::array<uint32_t, 2>& ends) const {
+    return is_input(w) ? (w == ends[0] ? 0.0 : 1.0) : parameter_[w - r_.num_input_points];
   }
 
   // Every triangle split along each of its split edges in turn, keeping its orientation and facet.
@@ -285,7 +319,8 @@ class Refiner {
   FacetGroups groups_;
   RefinedPlc r_;
   std::vector<double> points_;
-  std::vector<std::array<uint32_t, 2>> on_segment_;
+  std::vector<std::array<uint32_t, 2>> on_segment_;  // per point: the input segment it lies on (input points: none)
+  std::vector<double> parameter_;  // per Steiner point: its t along on_segment_ (sweepcdt/steiner_point.h)
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves

@@ -9,8 +9,9 @@
 //      triangulation as the sweep sphere, kept between rounds; only segments near the new points
 //      are looked up again);
 //   2. every segment that is not one of its edges is split — at a power-of-two distance from its
-//      end when exactly one end is an input vertex, at its midpoint otherwise (a point that would
-//      round onto an existing one takes another t: steiner_point.h) (the concentric-shell
+//      end when exactly one end is an input vertex, at its midpoint otherwise, each point computed
+//      from the input segment's ends at its parameter along it (a point that would round onto an
+//      existing one takes another t: steiner_point.h) (the concentric-shell
 //      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
 //      about it, so segments at a small angle do not split each other without end);
 //   3. the triangles holding a split segment are split at the new point (facet-interior edges are
@@ -49,8 +50,9 @@ struct RefinedPlc {
   std::vector<uint32_t> steiner_on;   // per Steiner point: an input triangle (index) holding it
   std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
                                       // coplanar facets: the facet's first input triangle)
-  std::vector<std::array<uint32_t, 2>> made_from;  // per Steiner point: the two points it splits
-                                                   // (`sweepcdt check` recognises it by them)
+  // Per Steiner point: the two points it is a rounded split of (sweepcdt/steiner_point.h), which
+  // `sweepcdt check` recognises it by: its input segment's ends, or a fold's two points.
+  std::vector<std::array<uint32_t, 2>> made_from;
   uint64_t rounds = 0, facets = 0, flips = 0;
   // The Delaunay tetrahedralization of plc.points that refinement kept (SteinerMode::Auto), which
   // the cavity sweep starts from (cavity/cavity_cdt.h) instead of computing it again.

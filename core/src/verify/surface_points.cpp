@@ -33,6 +33,23 @@ class Splits {
   // for some t in (0, 1)? Exact (sweepcdt/steiner_point.h).
   bool is_split(uint32_t s, uint32_t a, uint32_t b) const { return is_point_on_segment(p(a), p(b), p(s)); }
 
+  // Where split s of a ridge's ends goes among the ridge's points so far (`line`, from one end to
+  // the other): after line[i], the returned i. Rounding is monotone, so the splits of one segment
+  // are ordered alike in every coordinate (each the way the segment runs): compared coordinate by
+  // coordinate, the first that differs orders two of them.
+  std::size_t place_on(const std::vector<uint32_t>& line, uint32_t s) const {
+    const double* a = p(line.front());
+    const double* b = p(line.back());
+    const auto before = [&](uint32_t x, uint32_t y) {  // x nearer a than y
+      for (int k = 0; k < 3; ++k)
+        if (p(x)[k] != p(y)[k]) return (p(x)[k] < p(y)[k]) == (a[k] < b[k]);
+      return false;
+    };
+    std::size_t i = 0;
+    while (i + 2 < line.size() && before(line[i + 1], s)) ++i;
+    return i;
+  }
+
  private:
   std::span<const double> points_;
 };
@@ -121,8 +138,12 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     ridge_tree.any_overlap(at, [&](uint32_t k) {
       auto& line = r.on_edge[ridges[k]];
       std::size_t i = 0;
-      while (i + 1 < line.size() && !splits.is_split(s, line[i], line[i + 1])) ++i;
-      if (i + 1 == line.size()) return false;
+      if (splits.is_split(s, line.front(), line.back())) {
+        i = splits.place_on(line, s);
+      } else {  // a split of two neighbouring points (surface_points.h)
+        while (i + 1 < line.size() && !splits.is_split(s, line[i], line[i + 1])) ++i;
+        if (i + 1 == line.size()) return false;
+      }
       line.insert(line.begin() + static_cast<std::ptrdiff_t>(i) + 1, s);
       for (uint32_t j : facets.edges[ridges[k]].triangles) on.push_back(facets.facet_of[j]);
       return true;
@@ -134,7 +155,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     std::sort(on.begin(), on.end());
     on.erase(std::unique(on.begin(), on.end()), on.end());
     if (on.empty()) {
-      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not a rounded point between two neighbouring points on " +
+      problems.add("Steiner point " + std::to_string(s) + " " + point_text(ps) + " is not a rounded point of the segment of " +
                    (facets.mode == FacetMode::Triangles ? "an input edge, nor between two points of one input triangle"
                                                         : "a facet's boundary edge, nor between two points of one facet"));
       continue;

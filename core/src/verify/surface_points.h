@@ -3,9 +3,11 @@
 // Every further vertex (a Steiner point), in the order the mesh lists them, must be exactly a point
 // that `--steiner auto` can make (sweepcdt/steiner_point.h: the rounded a + t (b - a) for some t in
 // (0, 1), decided exactly) from two points already placed:
-//   - on a ridge (surface_facets.h): a point between two neighbouring points on it — refine
-//     splits the current subsegments only, so each ridge's points stay in order from end to end
-//     without any geometric test; the point lies on every facet that has the ridge;
+//   - on a ridge (surface_facets.h): a point of the ridge's segment, made from its two input ends;
+//     the ridge's points are kept in order from end to end (rounding is monotone, so its points
+//     are ordered alike in every coordinate); the point lies on every facet that has the ridge.
+//     On a segment whose ends' difference rounds (and in meshes made before 2026-11-27), it is
+//     made from the two neighbouring points on the ridge it falls between;
 //   - a fold point: a point between any two points of one facet (core/src/steiner/refine.h:
 //     rounding makes some edges inside a facet folds, which are split when not Delaunay); it lies
 //     inside that facet. So do points on input edges inside a coplanar facet: a fold along one, or
