@@ -9,6 +9,7 @@
 #include <string>
 
 #include "star_shapes.h"
+#include "sweep/sweep_cdt.h"
 #include "sweepcdt/star_cdt.h"
 #include "sweepcdt/validate.h"
 #include "triangulation_util.h"
@@ -16,6 +17,33 @@
 using namespace sweepcdt;
 
 namespace {
+
+int failures_compared = 0;  // expect_failure_reported_as_thrown() found a Theorem 5 failure both ways
+
+// The sweep reports Theorem 5 failing through its `failure` argument instead of throwing when asked
+// (vertex deletion asks: sweep_cdt.h); what it reports must be what it throws, message and witness.
+template <int D>
+void expect_failure_reported_as_thrown(const Plc<D>& polytope, const std::array<double, D>& centre, const std::string& what) {
+  CdtStatistics stats;
+  std::optional<NoCdtError> thrown, reported;
+  try {
+    detail::star_sweep_cdt<D>(polytope, centre, Options{}, stats);
+  } catch (const NoCdtError& e) {
+    thrown = e;
+  }
+  try {
+    detail::star_sweep_cdt<D>(polytope, centre, Options{}, stats, false, nullptr, &reported);
+  } catch (const NoCdtError& e) {  // another kind of failure: thrown either way
+    ASSERT_TRUE(thrown) << what;
+    EXPECT_STREQ(e.what(), thrown->what()) << what;
+    return;
+  }
+  ASSERT_EQ(reported.has_value(), thrown.has_value()) << what << ": the sweep found no CDT one way and one the other";
+  if (!reported) return;  // the sweep succeeded; star_cdt() refused its result after it
+  EXPECT_STREQ(reported->what(), thrown->what()) << what;
+  EXPECT_EQ(reported->witness(), thrown->witness()) << what;
+  ++failures_compared;
+}
 
 // Returns whether a CDT was found. A star-shaped polytope need not have a CDT (Schönhardt's prism
 // is star-shaped); then, or when cdt() needed another perturbation order than vertex ids (paper §6;
@@ -33,6 +61,7 @@ bool expect_star_cdt_is_cdt(const Plc<D>& polytope, const std::array<double, D>&
   options.statistics = &stats;
   if (!reference) {
     EXPECT_THROW(star_cdt<D>(polytope, centre, options), NoCdtError) << what;
+    expect_failure_reported_as_thrown<D>(polytope, centre, what);
     return false;
   }
   Triangulation<D> star;
@@ -113,4 +142,16 @@ TEST(StarCdt, CentreThatDoesNotSeeTheBoundary) {
     }
   }
   EXPECT_GT(refused, 0);
+}
+
+// Star-shaped polytopes without a CDT (Schönhardt-like twists among the radial polytopes): the sweep
+// reports the failure it would throw (expect_failure_reported_as_thrown above).
+TEST(StarCdt, FailureReportedAsThrown) {
+  failures_compared = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    std::mt19937_64 rng(91 + seed);
+    const Plc<3> polytope = fixtures::radial_polytope<3>(rng, 30, 4);
+    expect_star_cdt_is_cdt<3>(polytope, std::array<double, 3>{}, "radial seed " + std::to_string(seed));
+  }
+  EXPECT_GT(failures_compared, 0) << "no polytope whose sweep fails: the test proves nothing";
 }
