@@ -1,11 +1,14 @@
 #!/bin/sh
 # Same results before and after a change: runs the default command of two sweepcdt binaries on the
 # CAD parts (tests/data/cad) and the closed shared meshes and compares exit codes and output files
-# byte for byte (.mesh: same points, same tetrahedra in the same order).
-# usage: bench/compare_outputs.sh SWEEPCDT_BEFORE SWEEPCDT_AFTER
+# byte for byte (.mesh: same points, same tetrahedra in the same order). With --as-sets, files that
+# differ only in the order of their triangles and tetrahedra count as the same (same_mesh_sets.py).
+# usage: bench/compare_outputs.sh [--as-sets] SWEEPCDT_BEFORE SWEEPCDT_AFTER
 # Prints one line per difference and "N inputs: all identical" when there is none; exit 1 on any.
 set -u
-[ $# -eq 2 ] || { echo "usage: $0 SWEEPCDT_BEFORE SWEEPCDT_AFTER" >&2; exit 2; }
+as_sets=0
+[ "${1:-}" = "--as-sets" ] && { as_sets=1; shift; }
+[ $# -eq 2 ] || { echo "usage: $0 [--as-sets] SWEEPCDT_BEFORE SWEEPCDT_AFTER" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 shared="$root/../shared/data"
 work=$(mktemp -d)
@@ -17,6 +20,7 @@ for f in off/femur.off off/icosahedron.off stl_ascii/t13_data_ascii.stl stl_bina
 done
 count=0
 differ=0
+reordered=0
 for f in $inputs; do
   count=$((count + 1))
   "$1" "$f" -o "$work/before.mesh" --quiet >/dev/null 2>&1; a=$?
@@ -24,9 +28,13 @@ for f in $inputs; do
   if [ $a -ne $b ]; then
     echo "$f: exit code $a before, $b after"; differ=1
   elif [ $a -eq 0 ] && ! cmp -s "$work/before.mesh" "$work/after.mesh"; then
-    echo "$f: outputs differ"; differ=1
+    if [ $as_sets -eq 1 ] && python3 "$root/bench/same_mesh_sets.py" "$work/before.mesh" "$work/after.mesh" >/dev/null; then
+      reordered=$((reordered + 1))
+    else
+      echo "$f: outputs differ"; differ=1
+    fi
   fi
   rm -f "$work/before.mesh" "$work/after.mesh"
 done
-[ $differ -eq 0 ] && echo "$count inputs: all identical (exit codes and output files)"
+[ $differ -eq 0 ] && echo "$count inputs: all identical (exit codes and output files; $reordered of them with elements in another order)"
 exit $differ

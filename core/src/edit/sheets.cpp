@@ -2,8 +2,10 @@
 #include "sheets.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "../ids_text.h"
@@ -109,11 +111,14 @@ class SheetBuilder {
       if (i != axis) p[j++] = point_(x)[i];
     return p;
   }
-  Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const {
+  // The orientation of the D - 1 points `ids` and `last` projected along `axis`.
+  Sign projected_orient(const uint32_t* ids, uint32_t last, int axis) const {
     predicates::Coords<D> c;
     for (int i = 0; i < D; ++i) c[i] = point_(i + 1 < D ? ids[i] : last);
     return predicates::orient_projected<D>(c, axis);
   }
+  Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
+  Sign projected_orient(std::initializer_list<uint32_t> ids, uint32_t last, int axis) const { return projected_orient(ids.begin(), last, axis); }
 
   [[noreturn]] void refuse(const Sheet<D>& sheet, const std::string& why) const {
     throw VertexRemovalError("vertex " + std::to_string(v_) + " cannot be deleted: " + why + " (constraining simplex " +
@@ -199,6 +204,8 @@ class SheetBuilder {
           sheet.fill.push_back(s);
           return;
         }
+      if constexpr (D == 3)
+        if (ids.size() <= kMostEarClipped && triangulate_by_ears(sheet, boundary, v_, axis, want)) return;
       std::map<uint32_t, uint32_t> local;
       Plc<D - 1> polytope;
       for (uint32_t x : ids) {
@@ -241,6 +248,73 @@ class SheetBuilder {
     }
   }
 
+  // A hole of a few vertices (D = 3) is cut into ears along its boundary polygon (`boundary`: its
+  // edges; `inside`: a point that sees each of them from inside, v) and flipped to the in-plane CDT:
+  // Lawson's flips reach the polygon's one CDT (under the perturbation) from any triangulation, so
+  // this is the triangulation the star CDT of the projection, flipped, gives — without the sweep and
+  // its validation. False when it does not apply: the boundary is not one cycle, or rounding puts
+  // the lifted point of the flips in the plane (then the projection's CDT is kept, below).
+  static constexpr std::size_t kMostEarClipped = 12;
+  bool triangulate_by_ears(Sheet<D>& sheet, const std::vector<std::vector<uint32_t>>& boundary, uint32_t inside, int axis, Sign want) const {
+    const std::size_t n = boundary.size();
+    std::vector<uint32_t> cycle{boundary[0][0], boundary[0][1]};
+    std::vector<char> used(n, 0);
+    used[0] = 1;
+    for (std::size_t walked = 1; walked < n; ++walked) {
+      const uint32_t at = cycle.back();
+      std::size_t e = 0;
+      while (e < n && (used[e] || (boundary[e][0] != at && boundary[e][1] != at))) ++e;
+      if (e == n) return false;
+      used[e] = 1;
+      cycle.push_back(boundary[e][0] == at ? boundary[e][1] : boundary[e][0]);
+    }
+    if (cycle.back() != cycle.front()) return false;
+    cycle.pop_back();
+    std::vector<uint32_t> distinct = cycle;
+    std::sort(distinct.begin(), distinct.end());
+    if (std::unique(distinct.begin(), distinct.end()) != distinct.end() || cycle.size() != n) return false;
+    // Run the cycle with the hole on the `want` side of each edge.
+    for (std::size_t i = 0; i < n; ++i) {
+      const Sign side = projected_orient({cycle[i], cycle[(i + 1) % n]}, inside, axis);
+      if (side == Sign::Zero) continue;  // the closing edge through v
+      if (side != want) std::reverse(cycle.begin(), cycle.end());
+      break;
+    }
+    // Ears: a corner turning the `want` way whose triangle holds no other vertex of the polygon.
+    const auto off = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t q) {
+      return projected_orient({a, b}, q, axis) == -want || projected_orient({b, c}, q, axis) == -want || projected_orient({c, a}, q, axis) == -want;
+    };
+    std::vector<std::array<uint32_t, D>> ears;
+    while (cycle.size() > 3) {
+      const std::size_t m = cycle.size();
+      std::size_t i = 0;
+      for (; i < m; ++i) {
+        const uint32_t a = cycle[(i + m - 1) % m], b = cycle[i], c = cycle[(i + 1) % m];
+        if (projected_orient({a, b}, c, axis) != want) continue;
+        if (std::all_of(cycle.begin(), cycle.end(), [&](uint32_t q) { return q == a || q == b || q == c || off(a, b, c, q); })) break;
+      }
+      if (i == m) return false;  // a simple polygon always has an ear: only a degenerate walk gets here
+      ears.push_back({cycle[(i + m - 1) % m], cycle[i], cycle[(i + 1) % m]});
+      cycle.erase(cycle.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    if (projected_orient({cycle[0], cycle[1]}, cycle[2], axis) != want) return false;
+    ears.push_back({cycle[0], cycle[1], cycle[2]});
+    if (!lifted_off_plane(ears[0])) return false;
+    sheet.fill.insert(sheet.fill.end(), ears.begin(), ears.end());
+    flip_to_in_plane_delaunay(sheet.fill, axis, want);
+    return true;
+  }
+
+  // A point e off the plane of triangle t (its corner plus its normal), which makes the in-circle
+  // test of points in that plane an insphere test; nullopt when rounding puts it in the plane.
+  std::optional<std::array<double, 3>> lifted_off_plane(const std::array<uint32_t, D>& t) const {
+    const double *a = point_(t[0]), *b = point_(t[1]), *c = point_(t[2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const std::array<double, 3> e{a[0] + u[1] * w[2] - u[2] * w[1], a[1] + u[2] * w[0] - u[0] * w[2], a[2] + u[0] * w[1] - u[1] * w[0]};
+    if (predicates::orient<3>({a, b, c, e.data()}) == Sign::Zero) return std::nullopt;
+    return e;
+  }
+
   // The projection's CDT is a CDT for the projected metric; in a plane oblique to the axes it need
   // not be the facet's own. Lawson's flips make it so: the in-circle test of coplanar points is the
   // insphere test with a point e off their plane (facet_flips.h; e's perturbation term vanishes),
@@ -248,10 +322,9 @@ class SheetBuilder {
   // one triangle) and keep each triangle oriented like the sheet.
   void flip_to_in_plane_delaunay(std::vector<std::array<uint32_t, D>>& fill, int axis, Sign want) const {
     if (fill.size() < 2) return;
-    const double *a = point_(fill[0][0]), *b = point_(fill[0][1]), *c = point_(fill[0][2]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double e[3] = {a[0] + u[1] * w[2] - u[2] * w[1], a[1] + u[2] * w[0] - u[0] * w[2], a[2] + u[0] * w[1] - u[1] * w[0]};
-    if (predicates::orient<3>({a, b, c, e}) == Sign::Zero) return;  // rounding put e in the plane: keep the projection's
+    const auto lifted = lifted_off_plane(fill[0]);
+    if (!lifted) return;  // rounding put e in the plane: keep the projection's
+    const double* e = lifted->data();
     const auto vertex = [&](uint32_t x) { return predicates::Vertex{point_(x), order_(x)}; };
     const auto oriented = [&](uint32_t x, uint32_t y, uint32_t z) { return projected_orient({x, y}, z, axis) == want; };
     for (std::size_t flips = 0; flips <= fill.size() * fill.size();) {
