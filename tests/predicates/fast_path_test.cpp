@@ -104,6 +104,51 @@ TEST(FastPath, CollinearTriplesOrient3) {
   EXPECT_GT(zeros, cases / 6) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
+// orient3's small-range exact stage (orient3_small.h): coordinates that are multiples of 2^low below
+// 2^(low + 61) — four coplanar points of a facet with float coordinates, a Steiner point a + t (b - a)
+// among them, or lattice points on a plane — exactly 0 by construction, their 1-ulp neighbours, and
+// sets whose binary range is 60 to 64 bits (beyond 61 the general stage decides) with determinants
+// near the 189-bit limit, against the rational reference.
+TEST(FastPath, SmallRangeOrient3) {
+  Rng rng(0x5a11);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  for (int n = 0; n < 6000; ++n) {
+    std::array<Point<3>, 5> pts;
+    const int kind = n % 4;
+    if (kind == 0) {  // a float plane: p3 = p0 + s (p1 - p0) + t (p2 - p0) with s, t of few bits
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) pts[i][k] = static_cast<float>(uniform(rng, -200.0, 200.0));
+      const double s = uniform_int(rng, -64, 64) / 64.0, t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
+      for (int k = 0; k < 3; ++k) pts[3][k] = pts[0][k] + s * (pts[1][k] - pts[0][k]) + t * (pts[2][k] - pts[0][k]);
+    } else if (kind == 1) {  // lattice points on the plane x + 2y - 3z = c
+      const double c = uniform_int(rng, -20, 20);
+      for (int i = 0; i < 4; ++i) {
+        const double y = uniform_int(rng, -1000, 1000), z = uniform_int(rng, -1000, 1000);
+        pts[i] = {c - 2 * y + 3 * z, y, z};
+      }
+    } else {  // a binary range of 60 to 64 bits: 2^(range - 1) beside 1, and large random integers
+      const int range = 60 + n % 5;
+      for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k) {
+          const double big = std::ldexp(1.0, range - 1) - std::ldexp(1.0, range - 53) * uniform_int(rng, 0, 1 << 20);
+          pts[i][k] = (uniform_int(rng, 0, 1) ? 1 : -1) * (uniform_int(rng, 0, 3) == 0 ? 1.0 : big);
+        }
+      if (kind == 3) pts[3] = pts[uniform_int(rng, 0, 2)], pts[3][uniform_int(rng, 0, 2)] = 1.0;  // near a duplicate
+    }
+    if (n % 5 == 1) pts[n % 4][n % 3] = std::nextafter(pts[n % 4][n % 3], 1e300);
+    if (n % 5 == 2) pts[n % 4][n % 3] = std::nextafter(pts[n % 4][n % 3], -1e300);
+    pts[4] = pts[0];
+    std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);
+    const double scale = n % 7 == 0 ? 0x1p-30 : n % 7 == 1 ? 0x1p40 : 1.0;
+    for (auto& p : pts) p = scaled<3>(p, scale);
+    check_orient_insphere<3>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 5) << "too few exact zeros: " << zeros << " of " << cases;
+}
+
 // Coordinates whose binary range exceeds 62 bits — CAD parts put 50.0 beside rounding residues such
 // as 3.67e-15 (r cos 90 degrees) — go to the fixed-width stage as multi-limb integers (ShiftedArith in
 // arith.h) instead of GMP. Exactly coplanar/cospherical sets (one coordinate shared by all points, so

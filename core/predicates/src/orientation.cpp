@@ -7,6 +7,7 @@
 
 #include "arith.h"
 #include "filters4.h"  // and filters3.h
+#include "orient3_small.h"
 
 namespace sweepcdt::predicates {
 namespace {
@@ -150,6 +151,7 @@ Sign orient2(const Coords<3>& p) {
 // The stages after a failed filter, out of line so the filters stay small where they are inlined.
 [[gnu::noinline]] Sign orient3_exact(const Coords<4>& p) {
   if (has_equal_points(p, 3) || has_collinear_triple(p)) return detail::count_filtered(), Sign::Zero;
+  if (const auto sign = detail::orient3_small_range(p)) return detail::count_exact(), *sign;
   return detail::exact_sign(OrientFormula<3>{p});
 }
 [[gnu::noinline]] Sign insphere3_exact(const Coords<5>& p) {
