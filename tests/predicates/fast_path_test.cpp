@@ -104,7 +104,7 @@ TEST(FastPath, CollinearTriplesOrient3) {
   EXPECT_GT(zeros, cases / 6) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
-// orient3's small-range exact stage (orient3_small.h): coordinates that are multiples of 2^low below
+// orient3's small-range exact stage (orient_small.h): coordinates that are multiples of 2^low below
 // 2^(low + 61) — four coplanar points of a facet with float coordinates, a Steiner point a + t (b - a)
 // among them, or lattice points on a plane — exactly 0 by construction, their 1-ulp neighbours, and
 // sets whose binary range is 60 to 64 bits (beyond 61 the general stage decides) with determinants
@@ -143,6 +143,48 @@ TEST(FastPath, SmallRangeOrient3) {
     const double scale = n % 7 == 0 ? 0x1p-30 : n % 7 == 1 ? 0x1p40 : 1.0;
     for (auto& p : pts) p = scaled<3>(p, scale);
     check_orient_insphere<3>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 5) << "too few exact zeros: " << zeros << " of " << cases;
+}
+
+// orient2's small-range exact stage (orient_small.h), as above in the plane: three collinear points
+// with float coordinates (the third a + t (b - a), t of 20 bits), lattice points on a line, and sets
+// whose binary range is 60 to 64 bits, with 1-ulp neighbours, against the rational reference.
+TEST(FastPath, SmallRangeOrient2) {
+  Rng rng(0x5a12);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  for (int n = 0; n < 6000; ++n) {
+    std::array<Point<2>, 4> pts;
+    const int kind = n % 3;
+    if (kind == 0) {
+      for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 2; ++k) pts[i][k] = static_cast<float>(uniform(rng, -200.0, 200.0));
+      const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
+      for (int k = 0; k < 2; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
+    } else if (kind == 1) {  // lattice points on the line 3x - 5y = c
+      const double c = uniform_int(rng, -20, 20) * 3;
+      for (int i = 0; i < 3; ++i) {
+        const double y = 3 * uniform_int(rng, -1000, 1000);
+        pts[i] = {(c + 5 * y) / 3, y};
+      }
+    } else {
+      const int range = 60 + n % 5;
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 2; ++k) {
+          const double big = std::ldexp(1.0, range - 1) - std::ldexp(1.0, range - 53) * uniform_int(rng, 0, 1 << 20);
+          pts[i][k] = (uniform_int(rng, 0, 1) ? 1 : -1) * (uniform_int(rng, 0, 3) == 0 ? 1.0 : big);
+        }
+    }
+    if (n % 5 == 1) pts[n % 3][n % 2] = std::nextafter(pts[n % 3][n % 2], 1e300);
+    if (n % 5 == 2) pts[n % 3][n % 2] = std::nextafter(pts[n % 3][n % 2], -1e300);
+    pts[3] = pts[0];
+    std::swap(pts[uniform_int(rng, 0, 2)], pts[uniform_int(rng, 0, 2)]);
+    const double scale = n % 7 == 0 ? 0x1p-30 : n % 7 == 1 ? 0x1p40 : 1.0;
+    for (auto& p : pts) p = scaled<2>(p, scale);
+    check_orient_insphere<2>(pts, budget, zeros);
     ++cases;
   }
   EXPECT_EQ(budget.failures, 0);

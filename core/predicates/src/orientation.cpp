@@ -7,7 +7,7 @@
 
 #include "arith.h"
 #include "filters4.h"  // and filters3.h
-#include "orient3_small.h"
+#include "orient_small.h"
 
 namespace sweepcdt::predicates {
 namespace {
@@ -145,6 +145,7 @@ Sign orient2(const Coords<3>& p) {
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
   if (has_equal_points(p, 2)) return detail::count_filtered(), Sign::Zero;
+  if (const auto sign = detail::orient2_small_range(p)) return detail::count_exact(), *sign;
   return detail::exact_sign(OrientFormula<2>{p});
 }
 
