@@ -104,92 +104,60 @@ TEST(FastPath, CollinearTriplesOrient3) {
   EXPECT_GT(zeros, cases / 6) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
-// orient3's small-range exact stage (orient_small.h): coordinates that are multiples of 2^low below
-// 2^(low + 61) — four coplanar points of a facet with float coordinates, a Steiner point a + t (b - a)
-// among them, or lattice points on a plane — exactly 0 by construction, their 1-ulp neighbours, and
-// sets whose binary range is 60 to 64 bits (beyond 61 the general stage decides) with determinants
-// near the 189-bit limit, against the rational reference.
-TEST(FastPath, SmallRangeOrient3) {
-  Rng rng(0x5a11);
+// orient2's and orient3's small-range exact stage (orient_small.h): coordinates that are multiples
+// of 2^low below 2^(low + 61) — D + 1 points of a hyperplane with float coordinates (the last an
+// affine combination with few-bit weights, as Steiner points are), or lattice points on one — exactly
+// 0 by construction, their 1-ulp neighbours, and sets whose binary range is 60 to 64 bits (beyond 61
+// the general stage decides) with determinants near the limit, against the rational reference.
+template <int D>
+void small_range_case(uint64_t seed) {
+  Rng rng(seed);
   FailureBudget budget;
   int zeros = 0, cases = 0;
   for (int n = 0; n < 6000; ++n) {
-    std::array<Point<3>, 5> pts;
+    std::array<Point<D>, D + 2> pts;
     const int kind = n % 4;
-    if (kind == 0) {  // a float plane: p3 = p0 + s (p1 - p0) + t (p2 - p0) with s, t of few bits
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) pts[i][k] = static_cast<float>(uniform(rng, -200.0, 200.0));
-      const double s = uniform_int(rng, -64, 64) / 64.0, t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
-      for (int k = 0; k < 3; ++k) pts[3][k] = pts[0][k] + s * (pts[1][k] - pts[0][k]) + t * (pts[2][k] - pts[0][k]);
-    } else if (kind == 1) {  // lattice points on the plane x + 2y - 3z = c
+    if (kind == 0) {  // p_D = p_0 + sum of w_i (p_i - p_0), w_1 of 20 bits, the others of 6
+      for (int i = 0; i < D; ++i)
+        for (int k = 0; k < D; ++k) pts[i][k] = static_cast<float>(uniform(rng, -200.0, 200.0));
+      pts[D] = pts[0];
+      for (int i = 1; i < D; ++i) {
+        const double w = i == 1 ? uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20) : uniform_int(rng, -64, 64) / 64.0;
+        for (int k = 0; k < D; ++k) pts[D][k] += w * (pts[i][k] - pts[0][k]);
+      }
+    } else if (kind == 1) {  // lattice points on the hyperplane x_0 + 2 x_1 - 3 x_2 ... = c
       const double c = uniform_int(rng, -20, 20);
-      for (int i = 0; i < 4; ++i) {
-        const double y = uniform_int(rng, -1000, 1000), z = uniform_int(rng, -1000, 1000);
-        pts[i] = {c - 2 * y + 3 * z, y, z};
+      for (int i = 0; i <= D; ++i) {
+        pts[i][0] = c;
+        for (int k = 1; k < D; ++k) {
+          pts[i][k] = uniform_int(rng, -1000, 1000);
+          pts[i][0] -= (k % 2 ? 2 : -3) * pts[i][k];
+        }
       }
     } else {  // a binary range of 60 to 64 bits: 2^(range - 1) beside 1, and large random integers
       const int range = 60 + n % 5;
-      for (int i = 0; i < 4; ++i)
-        for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i <= D; ++i)
+        for (int k = 0; k < D; ++k) {
           const double big = std::ldexp(1.0, range - 1) - std::ldexp(1.0, range - 53) * uniform_int(rng, 0, 1 << 20);
           pts[i][k] = (uniform_int(rng, 0, 1) ? 1 : -1) * (uniform_int(rng, 0, 3) == 0 ? 1.0 : big);
         }
-      if (kind == 3) pts[3] = pts[uniform_int(rng, 0, 2)], pts[3][uniform_int(rng, 0, 2)] = 1.0;  // near a duplicate
+      if (kind == 3) pts[D] = pts[uniform_int(rng, 0, D - 1)], pts[D][uniform_int(rng, 0, D - 1)] = 1.0;  // near a duplicate
     }
-    if (n % 5 == 1) pts[n % 4][n % 3] = std::nextafter(pts[n % 4][n % 3], 1e300);
-    if (n % 5 == 2) pts[n % 4][n % 3] = std::nextafter(pts[n % 4][n % 3], -1e300);
-    pts[4] = pts[0];
-    std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);
+    if (n % 5 == 1) pts[n % (D + 1)][n % D] = std::nextafter(pts[n % (D + 1)][n % D], 1e300);
+    if (n % 5 == 2) pts[n % (D + 1)][n % D] = std::nextafter(pts[n % (D + 1)][n % D], -1e300);
+    pts[D + 1] = pts[0];
+    std::swap(pts[uniform_int(rng, 0, D)], pts[uniform_int(rng, 0, D)]);
     const double scale = n % 7 == 0 ? 0x1p-30 : n % 7 == 1 ? 0x1p40 : 1.0;
-    for (auto& p : pts) p = scaled<3>(p, scale);
-    check_orient_insphere<3>(pts, budget, zeros);
+    for (auto& p : pts) p = scaled<D>(p, scale);
+    check_orient_insphere<D>(pts, budget, zeros);
     ++cases;
   }
   EXPECT_EQ(budget.failures, 0);
   EXPECT_GT(zeros, cases / 5) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
-// orient2's small-range exact stage (orient_small.h), as above in the plane: three collinear points
-// with float coordinates (the third a + t (b - a), t of 20 bits), lattice points on a line, and sets
-// whose binary range is 60 to 64 bits, with 1-ulp neighbours, against the rational reference.
-TEST(FastPath, SmallRangeOrient2) {
-  Rng rng(0x5a12);
-  FailureBudget budget;
-  int zeros = 0, cases = 0;
-  for (int n = 0; n < 6000; ++n) {
-    std::array<Point<2>, 4> pts;
-    const int kind = n % 3;
-    if (kind == 0) {
-      for (int i = 0; i < 2; ++i)
-        for (int k = 0; k < 2; ++k) pts[i][k] = static_cast<float>(uniform(rng, -200.0, 200.0));
-      const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
-      for (int k = 0; k < 2; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
-    } else if (kind == 1) {  // lattice points on the line 3x - 5y = c
-      const double c = uniform_int(rng, -20, 20) * 3;
-      for (int i = 0; i < 3; ++i) {
-        const double y = 3 * uniform_int(rng, -1000, 1000);
-        pts[i] = {(c + 5 * y) / 3, y};
-      }
-    } else {
-      const int range = 60 + n % 5;
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 2; ++k) {
-          const double big = std::ldexp(1.0, range - 1) - std::ldexp(1.0, range - 53) * uniform_int(rng, 0, 1 << 20);
-          pts[i][k] = (uniform_int(rng, 0, 1) ? 1 : -1) * (uniform_int(rng, 0, 3) == 0 ? 1.0 : big);
-        }
-    }
-    if (n % 5 == 1) pts[n % 3][n % 2] = std::nextafter(pts[n % 3][n % 2], 1e300);
-    if (n % 5 == 2) pts[n % 3][n % 2] = std::nextafter(pts[n % 3][n % 2], -1e300);
-    pts[3] = pts[0];
-    std::swap(pts[uniform_int(rng, 0, 2)], pts[uniform_int(rng, 0, 2)]);
-    const double scale = n % 7 == 0 ? 0x1p-30 : n % 7 == 1 ? 0x1p40 : 1.0;
-    for (auto& p : pts) p = scaled<2>(p, scale);
-    check_orient_insphere<2>(pts, budget, zeros);
-    ++cases;
-  }
-  EXPECT_EQ(budget.failures, 0);
-  EXPECT_GT(zeros, cases / 5) << "too few exact zeros: " << zeros << " of " << cases;
-}
+TEST(FastPath, SmallRangeOrient2) { small_range_case<2>(0x5a12); }
+TEST(FastPath, SmallRangeOrient3) { small_range_case<3>(0x5a11); }
 
 // Coordinates whose binary range exceeds 62 bits — CAD parts put 50.0 beside rounding residues such
 // as 3.67e-15 (r cos 90 degrees) — go to the fixed-width stage as multi-limb integers (ShiftedArith in
