@@ -89,7 +89,6 @@ void expect_cdt_of_hole(const Fan& fan, const std::vector<std::array<uint32_t, 3
 
 TEST(Sheets, HoleIsFilledWithItsCdt) {
   std::mt19937_64 rng(8);
-  int filled = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const int n = 4 + trial % 14;  // 4..17 vertices: ears (up to 12) and the star CDT beyond
     const Fan fan = random_fan(rng, n);
@@ -99,7 +98,5 @@ TEST(Sheets, HoleIsFilledWithItsCdt) {
     const auto sheets = detail::sheets_without<3>(0, fan.through_v, point, order, same_facet);
     ASSERT_EQ(sheets.size(), 1u) << "trial " << trial;
     expect_cdt_of_hole(fan, sheets[0].fill, n, "trial " + std::to_string(trial) + " (" + std::to_string(n) + " vertices)");
-    ++filled;
   }
-  EXPECT_EQ(filled, 400);
 }

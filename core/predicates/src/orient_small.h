@@ -8,14 +8,14 @@
 //   and orient3's determinant, at most 189 bits, is summed as 2^64 A + B with A an __int128 and
 //   0 <= B < 2^64, which gives its sign.
 // Exact, no heap, no limb loops: a fraction of the general stage's instructions. Inputs out of that
-// range (or subnormal, infinite, NaN) return nullopt and take the general stage.
+// range (or infinite, NaN) return nullopt and take the general stage.
 #pragma once
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <optional>
 
+#include "arith.h"
 #include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::predicates::detail {
@@ -23,33 +23,21 @@ namespace sweepcdt::predicates::detail {
 inline constexpr int kSmallRangeBits = 61;
 
 // The rows p_i - p_N (i < N) of N + 1 points in D = N dimensions, scaled by a common power of two
-// to integers: |entry| < 2^62 (all 0 when every coordinate is 0). Nullopt when the nonzero
-// coordinates span more than kSmallRangeBits bits or one is subnormal, infinite or NaN.
+// to integers: |entry| < 2^62 (all 0 when every coordinate is 0). The scan and the scaling are the
+// general stage's (arith.h: ScanArith, IntArith). Nullopt when the nonzero coordinates span more
+// than kSmallRangeBits bits, or one is infinite or NaN.
 template <int N>
 std::optional<std::array<std::array<int64_t, N>, N>> small_range_differences(const Coords<N + 1>& p) {
-  std::array<std::array<int64_t, N>, N + 1> odd{};  // each coordinate as odd * 2^shift (zero: 0)
-  std::array<std::array<int, N>, N + 1> shift{};
-  int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
+  ScanArith scan;
   for (int i = 0; i <= N; ++i)
-    for (int k = 0; k < N; ++k) {
-      const uint64_t bits = std::bit_cast<uint64_t>(p[i][k]);
-      const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-      const uint64_t fraction = bits & ((uint64_t{1} << 52) - 1);
-      if (biased == 0 && fraction == 0) continue;               // zero
-      if (biased == 0 || biased == 0x7ff) return std::nullopt;  // subnormal, infinite, NaN
-      const uint64_t m = fraction | (uint64_t{1} << 52);
-      const int zeros = std::countr_zero(m);
-      odd[i][k] = static_cast<int64_t>(m >> zeros) * ((bits >> 63) ? -1 : 1);
-      shift[i][k] = biased - 1075 + zeros;
-      lowest = std::min(lowest, shift[i][k]);
-      highest = std::max(highest, biased - 1023);  // 2^highest <= |value| < 2^(highest + 1)
-    }
+    for (int k = 0; k < N; ++k) scan.see(p[i][k]);
   std::array<std::array<int64_t, N>, N> d{};
-  if (lowest == std::numeric_limits<int>::max()) return d;  // every coordinate 0
-  if (highest + 1 - lowest > kSmallRangeBits) return std::nullopt;
-  const auto scaled = [&](int i, int k) { return odd[i][k] == 0 ? int64_t{0} : odd[i][k] * (int64_t{1} << (shift[i][k] - lowest)); };
+  if (!scan.finite) return std::nullopt;
+  if (scan.lowest_bit == std::numeric_limits<int>::max()) return d;  // every coordinate 0
+  if (scan.highest_bit + 1 - scan.lowest_bit > kSmallRangeBits) return std::nullopt;
+  const IntArith<Int128> scaling{scan.lowest_bit};  // |scaled| < 2^61
   for (int i = 0; i < N; ++i)
-    for (int k = 0; k < N; ++k) d[i][k] = scaled(i, k) - scaled(N, k);  // |x| < 2^61 each
+    for (int k = 0; k < N; ++k) d[i][k] = scaling.scaled(p[i][k]) - scaling.scaled(p[N][k]);
   return d;
 }
 

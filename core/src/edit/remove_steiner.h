@@ -21,9 +21,9 @@ inline constexpr uint32_t kPointsForThreads = 1024;
 // `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner
 // points); both are replaced by the result. `made_from`: per Steiner point, the two points it was
 // made from (refine.h); `sweepcdt check` recognises a Steiner point as a rounded split of those
-// two, so a point stays while a point made from it stays. (Only fold points are made from Steiner
-// points: a point on a segment is made from the segment's input ends.) Returns the number of
-// points deleted.
+// two, so a point stays while a point made from it stays. (A point on a segment is made from the
+// segment's input ends when their difference is exact; only points on other segments and fold
+// points are made from Steiner points.) Returns the number of points deleted.
 // Throws CancelledError when `options.progress` says so.
 uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
                                const Options& options);

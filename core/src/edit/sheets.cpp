@@ -5,7 +5,6 @@
 #include <initializer_list>
 #include <map>
 #include <numeric>
-#include <optional>
 #include <string>
 
 #include "../ids_text.h"
@@ -272,7 +271,7 @@ class SheetBuilder {
     cycle.pop_back();
     std::vector<uint32_t> distinct = cycle;
     std::sort(distinct.begin(), distinct.end());
-    if (std::unique(distinct.begin(), distinct.end()) != distinct.end() || cycle.size() != n) return false;
+    if (std::unique(distinct.begin(), distinct.end()) != distinct.end()) return false;
     // Run the cycle with the hole on the `want` side of each edge.
     for (std::size_t i = 0; i < n; ++i) {
       const Sign side = projected_orient({cycle[i], cycle[(i + 1) % n]}, inside, axis);
@@ -299,20 +298,9 @@ class SheetBuilder {
     }
     if (projected_orient({cycle[0], cycle[1]}, cycle[2], axis) != want) return false;
     ears.push_back({cycle[0], cycle[1], cycle[2]});
-    if (!lifted_off_plane(ears[0])) return false;
+    if (!flip_to_in_plane_delaunay(ears, axis, want)) return false;
     sheet.fill.insert(sheet.fill.end(), ears.begin(), ears.end());
-    flip_to_in_plane_delaunay(sheet.fill, axis, want);
     return true;
-  }
-
-  // A point e off the plane of triangle t (its corner plus its normal), which makes the in-circle
-  // test of points in that plane an insphere test; nullopt when rounding puts it in the plane.
-  std::optional<std::array<double, 3>> lifted_off_plane(const std::array<uint32_t, D>& t) const {
-    const double *a = point_(t[0]), *b = point_(t[1]), *c = point_(t[2]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const std::array<double, 3> e{a[0] + u[1] * w[2] - u[2] * w[1], a[1] + u[2] * w[0] - u[0] * w[2], a[2] + u[0] * w[1] - u[1] * w[0]};
-    if (predicates::orient<3>({a, b, c, e.data()}) == Sign::Zero) return std::nullopt;
-    return e;
   }
 
   // The projection's CDT is a CDT for the projected metric; in a plane oblique to the axes it need
@@ -320,11 +308,14 @@ class SheetBuilder {
   // insphere test with a point e off their plane (facet_flips.h; e's perturbation term vanishes),
   // under the perturbation order of the points. Flips stay inside the hole (its boundary edges have
   // one triangle) and keep each triangle oriented like the sheet.
-  void flip_to_in_plane_delaunay(std::vector<std::array<uint32_t, D>>& fill, int axis, Sign want) const {
-    if (fill.size() < 2) return;
-    const auto lifted = lifted_off_plane(fill[0]);
-    if (!lifted) return;  // rounding put e in the plane: keep the projection's
-    const double* e = lifted->data();
+  // False, changing nothing, when rounding puts e in the plane (then the caller keeps the
+  // projection's CDT, or has none).
+  bool flip_to_in_plane_delaunay(std::vector<std::array<uint32_t, D>>& fill, int axis, Sign want) const {
+    if (fill.size() < 2) return true;
+    const double *a = point_(fill[0][0]), *b = point_(fill[0][1]), *c = point_(fill[0][2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double e[3] = {a[0] + u[1] * w[2] - u[2] * w[1], a[1] + u[2] * w[0] - u[0] * w[2], a[2] + u[0] * w[1] - u[1] * w[0]};
+    if (predicates::orient<3>({a, b, c, e}) == Sign::Zero) return false;
     const auto vertex = [&](uint32_t x) { return predicates::Vertex{point_(x), order_(x)}; };
     const auto oriented = [&](uint32_t x, uint32_t y, uint32_t z) { return projected_orient({x, y}, z, axis) == want; };
     for (std::size_t flips = 0; flips <= fill.size() * fill.size();) {
@@ -348,8 +339,9 @@ class SheetBuilder {
         ++flips;
         break;
       }
-      if (!flipped) return;
+      if (!flipped) return true;
     }
+    return true;  // past the cap on flips (never reached: Lawson's flips end sooner)
   }
 
   const uint32_t v_;

@@ -29,8 +29,9 @@
 // its diametral ball) splits that segment instead — Ruppert's graded refinement, restricted to the
 // facets' folds. (Making such folds segments, as before, refined facets uniformly: pipe_tee_fine.stl
 // and gearwheel_ascii.stl ran past the point budget.) When no fold gets a point, the folds become
-// segments as a last resort. The shell parameter is rounded to 20 bits (sweepcdt/steiner_point.h), so on surfaces with
-// float coordinates most points lie exactly on their segments and make no folds at all.
+// segments as a last resort. The shell distance is rounded to 20 significant bits of the piece
+// split, and points are made from the input segment's ends (sweepcdt/steiner_point.h), so on
+// surfaces with float coordinates most points lie exactly on their segments and make no folds.
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 #pragma once
@@ -51,7 +52,8 @@ struct RefinedPlc {
   std::vector<uint32_t> original;     // per refined triangle: the input triangle it lies in (with
                                       // coplanar facets: the facet's first input triangle)
   // Per Steiner point: the two points it is a rounded split of (sweepcdt/steiner_point.h), which
-  // `sweepcdt check` recognises it by: its input segment's ends, or a fold's two points.
+  // `sweepcdt check` recognises it by: its input segment's ends (their difference exact), else the
+  // ends of the piece it split, or a fold's two points.
   std::vector<std::array<uint32_t, 2>> made_from;
   uint64_t rounds = 0, facets = 0, flips = 0;
   // The Delaunay tetrahedralization of plc.points that refinement kept (SteinerMode::Auto), which
