@@ -543,17 +543,19 @@ struct EditableCdt<D>::Impl {
   // Which side of constraint c (through v) is outside the cavity for the sweep: none when the star
   // has simplices on both sides (an inner facet), else the side without them.
   ExteriorSide cavity_side(const std::vector<uint32_t>& star, const Key& c) const {
-    const Key key = sorted(c);
     int sides = 0, last = 0;
-    for (uint32_t t : star)
+    for (uint32_t t : star) {
+      // c is a facet of t when t's vertex off c is its only one.
+      int off = -1, count = 0;
       for (int i = 0; i <= D; ++i)
-        if (sorted(facet(t, i)) == key) {
-          predicates::Coords<D + 1> p;
-          for (int k = 0; k < D; ++k) p[k] = point(c[k]);
-          p[D] = point(simplex(t)[i]);
-          last = predicates::to_int(predicates::orient<D>(p));
-          ++sides;
-        }
+        if (std::find(c.begin(), c.end(), simplex(t)[i]) == c.end()) off = i, ++count;
+      if (count != 1) continue;
+      predicates::Coords<D + 1> p;
+      for (int k = 0; k < D; ++k) p[k] = point(c[k]);
+      p[D] = point(simplex(t)[off]);
+      last = predicates::to_int(predicates::orient<D>(p));
+      ++sides;
+    }
     if (sides != 1) return ExteriorSide::None;
     return last > 0 ? ExteriorSide::Negative : ExteriorSide::Positive;
   }

@@ -5,6 +5,8 @@
 #include <initializer_list>
 #include <map>
 #include <numeric>
+#include <optional>
+#include <tuple>
 #include <string>
 
 #include "../ids_text.h"
@@ -34,33 +36,50 @@ class SheetBuilder {
       : v_(v), through_v_(through_v), point_(point), order_(order), same_facet_(same_facet) {}
 
   std::vector<Sheet<D>> run() {
-    // Ridges through v (a constraint without one of its other vertices) -> the constraints on them.
-    std::map<std::vector<uint32_t>, std::vector<uint32_t>> ridges;
+    // Ridges through v (a constraint without one of its other vertices), each with a constraint on
+    // it, sorted: the constraints on one ridge are neighbours.
     for (uint32_t c = 0; c < through_v_.size(); ++c)
       for (int i = 0; i < D; ++i)
-        if (through_v_[c][i] != v_) ridges[ridge(c, i)].push_back(c);
+        if (through_v_[c][i] != v_) ridges_.push_back({ridge(c, i), c});
+    std::sort(ridges_.begin(), ridges_.end());
     UnionFind sheets(through_v_.size());
-    for (const auto& [r, on] : ridges)
-      if (on.size() == 2 && same_facet_(on[0], on[1]) && coplanar(on[0], on[1]) && opposite(on[0], on[1], r)) sheets.unite(on[0], on[1]);
-    std::map<uint32_t, Sheet<D>> by_root;
-    for (uint32_t c = 0; c < through_v_.size(); ++c) by_root[sheets.find(c)].constraints.push_back(c);
-    std::vector<Sheet<D>> result;
-    for (auto& [root, sheet] : by_root) {
-      fill(sheet, ridges);
-      result.push_back(std::move(sheet));
+    for (std::size_t k = 0; k < ridges_.size();) {
+      const std::size_t on = constraints_on(ridges_[k].first);
+      if (on == 2) {
+        const uint32_t a = ridges_[k].second, b = ridges_[k + 1].second;
+        if (same_facet_(a, b) && coplanar(a, b) && opposite(a, b, ridges_[k].first)) sheets.unite(a, b);
+      }
+      k += on;
     }
+    // One sheet per root, in the order of the roots.
+    std::vector<char> is_root(through_v_.size(), 0);
+    for (uint32_t c = 0; c < through_v_.size(); ++c) is_root[sheets.find(c)] = 1;
+    std::vector<uint32_t> sheet_of(through_v_.size(), kNone);  // per root
+    std::vector<Sheet<D>> result;
+    for (uint32_t root = 0; root < through_v_.size(); ++root)
+      if (is_root[root]) sheet_of[root] = static_cast<uint32_t>(result.size()), result.emplace_back();
+    for (uint32_t c = 0; c < through_v_.size(); ++c) result[sheet_of[sheets.find(c)]].constraints.push_back(c);
+    for (Sheet<D>& sheet : result) fill(sheet);
     return result;
   }
 
  private:
-  std::vector<uint32_t> ridge(uint32_t c, int skip) const {
-    std::vector<uint32_t> r;
-    for (int i = 0; i < D; ++i)
-      if (i != skip) r.push_back(through_v_[c][i]);
+  using Ridge = std::array<uint32_t, D - 1>;  // sorted
+
+  Ridge ridge(uint32_t c, int skip) const {
+    Ridge r;
+    for (int i = 0, j = 0; i < D; ++i)
+      if (i != skip) r[j++] = through_v_[c][i];
     std::sort(r.begin(), r.end());
     return r;
   }
-  uint32_t apex(uint32_t c, const std::vector<uint32_t>& r) const {
+  // How many constraints through v hold ridge r.
+  std::size_t constraints_on(const Ridge& r) const {
+    const auto [first, last] = std::equal_range(ridges_.begin(), ridges_.end(), std::pair<Ridge, uint32_t>{r, 0},
+                                                [](const auto& x, const auto& y) { return x.first < y.first; });
+    return static_cast<std::size_t>(last - first);
+  }
+  uint32_t apex(uint32_t c, const Ridge& r) const {
     for (uint32_t x : through_v_[c])
       if (!std::binary_search(r.begin(), r.end(), x)) return x;
     return v_;
@@ -72,12 +91,12 @@ class SheetBuilder {
     return predicates::orient<D>(p);
   }
   bool coplanar(uint32_t a, uint32_t b) const {
-    for (uint32_t x : through_v_[b])
-      if (orient_with(a, x) != Sign::Zero) return false;
+    for (uint32_t x : through_v_[b])  // a's own vertices are in its hyperplane (and cost an exact zero)
+      if (std::find(through_v_[a].begin(), through_v_[a].end(), x) == through_v_[a].end() && orient_with(a, x) != Sign::Zero) return false;
     return true;
   }
   // Two coplanar simplices on ridge r lie on its two sides (one sheet), not folded onto each other.
-  bool opposite(uint32_t a, uint32_t b, const std::vector<uint32_t>& r) const {
+  bool opposite(uint32_t a, uint32_t b, const Ridge& r) const {
     if constexpr (D == 2) {
       const double *x = point_(r[0]), *p = point_(apex(a, r)), *q = point_(apex(b, r));
       for (int k = 0; k < 2; ++k)
@@ -117,6 +136,7 @@ class SheetBuilder {
     return predicates::orient_projected<D>(c, axis);
   }
   Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
+  Sign projected_orient(const Ridge& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
   Sign projected_orient(std::initializer_list<uint32_t> ids, uint32_t last, int axis) const { return projected_orient(ids.begin(), last, axis); }
 
   [[noreturn]] void refuse(const Sheet<D>& sheet, const std::string& why) const {
@@ -124,16 +144,18 @@ class SheetBuilder {
                              ids_text(through_v_[sheet.constraints.front()].data(), D) + ")");
   }
 
-  void fill(Sheet<D>& sheet, const std::map<std::vector<uint32_t>, std::vector<uint32_t>>& ridges) {
+  void fill(Sheet<D>& sheet) {
     // Free ridges: on one simplex of the sheet — the sheet's boundary passes through v there.
-    std::vector<std::vector<uint32_t>> free;
-    std::map<std::vector<uint32_t>, int> count;
+    std::vector<Ridge> free, in_sheet;
     for (uint32_t c : sheet.constraints)
       for (int i = 0; i < D; ++i)
-        if (through_v_[c][i] != v_) ++count[ridge(c, i)];
-    for (const auto& [r, n] : count) {
-      if (n == 1) free.push_back(r);
-      else if (ridges.at(r).size() != 2) refuse(sheet, "more than two facets meet at a ridge through it");
+        if (through_v_[c][i] != v_) in_sheet.push_back(ridge(c, i));
+    std::sort(in_sheet.begin(), in_sheet.end());
+    for (std::size_t k = 0, n = 0; k < in_sheet.size(); k += n) {
+      n = 1;
+      while (k + n < in_sheet.size() && in_sheet[k + n] == in_sheet[k]) ++n;
+      if (n == 1) free.push_back(in_sheet[k]);
+      else if (constraints_on(in_sheet[k]) != 2) refuse(sheet, "more than two facets meet at a ridge through it");
     }
     if constexpr (D == 2) {
       if (sheet.constraints.size() != 2) refuse(sheet, "it is an end of a constraining segment");
@@ -144,14 +166,17 @@ class SheetBuilder {
       }
       sheet.fill.push_back(orient_segment_like(ab, through_v_[sheet.constraints[0]]));  // runs the same way
     } else {
-      std::vector<uint32_t> closing;  // the straight edge through v that the sheet's boundary keeps
+      std::optional<Ridge> closing;  // the straight edge through v that the sheet's boundary keeps
       if (!free.empty()) {
-        if (D != 3) refuse(sheet, "it lies on the boundary of a facet (handled in D = 3 only)");
-        if (free.size() != 2) refuse(sheet, "it is a corner of a facet");
-        const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
-        const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
-        if (!strictly_between(a, v_, b)) refuse(sheet, "it is a corner of a facet");
-        closing = {std::min(a, b), std::max(a, b)};
+        if constexpr (D != 3) {
+          refuse(sheet, "it lies on the boundary of a facet (handled in D = 3 only)");
+        } else {
+          if (free.size() != 2) refuse(sheet, "it is a corner of a facet");
+          const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
+          const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
+          if (!strictly_between(a, v_, b)) refuse(sheet, "it is a corner of a facet");
+          closing = Ridge{std::min(a, b), std::max(a, b)};
+        }
       }
       triangulate(sheet, closing);
     }
@@ -177,17 +202,17 @@ class SheetBuilder {
   }
 
   // The (D-1)-dimensional star CDT of the sheet's polytope without v, on its projection.
-  void triangulate(Sheet<D>& sheet, const std::vector<uint32_t>& closing) {
+  void triangulate(Sheet<D>& sheet, const std::optional<Ridge>& closing) {
     if constexpr (D > 2) {
       const uint32_t c0 = sheet.constraints.front();
       const int axis = projection_axis(c0);
       // The fill is oriented like c0 within the hyperplane: the same sign of the projected orientation.
       const Sign want = projected_orient(std::vector<uint32_t>(through_v_[c0].begin(), through_v_[c0].end() - 1), through_v_[c0][D - 1], axis);
-      std::vector<std::vector<uint32_t>> boundary;
+      std::vector<Ridge> boundary;
       for (uint32_t c : sheet.constraints)
         for (int i = 0; i < D; ++i)
           if (through_v_[c][i] == v_) boundary.push_back(ridge(c, i));
-      if (!closing.empty()) boundary.push_back(closing);
+      if (closing) boundary.push_back(*closing);
       std::vector<uint32_t> ids;
       for (const auto& r : boundary) ids.insert(ids.end(), r.begin(), r.end());
       std::sort(ids.begin(), ids.end(), [&](uint32_t x, uint32_t y) { return order_(x) < order_(y); });
@@ -254,7 +279,7 @@ class SheetBuilder {
   // its validation. False when it does not apply: the boundary is not one cycle, or rounding puts
   // the lifted point of the flips in the plane (then the projection's CDT is kept, below).
   static constexpr std::size_t kMostEarClipped = 12;
-  bool triangulate_by_ears(Sheet<D>& sheet, const std::vector<std::vector<uint32_t>>& boundary, uint32_t inside, int axis, Sign want) const {
+  bool triangulate_by_ears(Sheet<D>& sheet, const std::vector<Ridge>& boundary, uint32_t inside, int axis, Sign want) const {
     const std::size_t n = boundary.size();
     std::vector<uint32_t> cycle{boundary[0][0], boundary[0][1]};
     std::vector<char> used(n, 0);
@@ -318,18 +343,28 @@ class SheetBuilder {
     if (predicates::orient<3>({a, b, c, e}) == Sign::Zero) return false;
     const auto vertex = [&](uint32_t x) { return predicates::Vertex{point_(x), order_(x)}; };
     const auto oriented = [&](uint32_t x, uint32_t y, uint32_t z) { return projected_orient({x, y}, z, axis) == want; };
+    struct Side {
+      uint64_t edge;  // its two vertices, the smaller first
+      uint32_t triangle;
+      int apex;  // the slot of the triangle's vertex off the edge
+      bool operator<(const Side& o) const { return std::tie(edge, triangle, apex) < std::tie(o.edge, o.triangle, o.apex); }
+    };
+    std::vector<Side> sides;
     for (std::size_t flips = 0; flips <= fill.size() * fill.size();) {
-      std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<std::size_t, int>>> edges;  // -> (triangle, apex slot)
-      for (std::size_t t = 0; t < fill.size(); ++t)
+      sides.clear();
+      for (uint32_t t = 0; t < fill.size(); ++t)
         for (int i = 0; i < 3; ++i) {
           const uint32_t x = fill[t][(i + 1) % 3], y = fill[t][(i + 2) % 3];
-          edges[{std::min(x, y), std::max(x, y)}].push_back({t, i});
+          sides.push_back({uint64_t{std::min(x, y)} << 32 | std::max(x, y), t, i});
         }
+      std::sort(sides.begin(), sides.end());
       bool flipped = false;
-      for (const auto& [edge, on] : edges) {
-        if (on.size() != 2) continue;
-        const auto [t1, i1] = on[0];
-        const auto [t2, i2] = on[1];
+      for (std::size_t k = 0; k < sides.size(); ++k) {
+        // An edge of two triangles (inside the hole); boundary edges have one.
+        if (k + 1 == sides.size() || sides[k + 1].edge != sides[k].edge) continue;
+        const uint32_t t1 = sides[k].triangle, t2 = sides[k + 1].triangle;
+        const int i1 = sides[k].apex, i2 = sides[k + 1].apex;
+        ++k;
         const uint32_t x = fill[t1][(i1 + 1) % 3], y = fill[t1][(i1 + 2) % 3], p = fill[t1][i1], q = fill[t2][i2];
         if (!predicates::inside_circumsphere<3>({vertex(x), vertex(y), vertex(p), {e, kNone - 1}}, vertex(q))) continue;
         if (!oriented(x, q, p) || !oriented(y, p, q)) continue;  // not a convex quadrilateral
@@ -349,6 +384,7 @@ class SheetBuilder {
   const std::function<const double*(uint32_t)>& point_;
   const std::function<uint32_t(uint32_t)>& order_;
   const std::function<bool(uint32_t, uint32_t)>& same_facet_;
+  std::vector<std::pair<Ridge, uint32_t>> ridges_;  // run()
 };
 
 }  // namespace
