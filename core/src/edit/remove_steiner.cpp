@@ -8,6 +8,24 @@
 #include "sweepcdt/editable_cdt.h"
 
 namespace sweepcdt::detail {
+namespace {
+
+// 0..n-1 in bit-reversed order (0, n/2, n/4, 3n/4, ...): consecutive entries far apart.
+std::vector<uint32_t> spread_order(uint32_t n) {
+  int bits = 0;
+  while ((uint64_t{1} << bits) < n) ++bits;
+  std::vector<uint32_t> order;
+  order.reserve(n);
+  for (uint64_t i = 0; i < (uint64_t{1} << bits); ++i) {
+    uint32_t reversed = 0;
+    for (int b = 0; b < bits; ++b)
+      if (i >> b & 1u) reversed |= 1u << (bits - 1 - b);
+    if (reversed < n) order.push_back(reversed);
+  }
+  return order;
+}
+
+}  // namespace
 
 uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
                                const Options& options) {
@@ -18,15 +36,20 @@ uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::ve
   for (const auto& pair : made_from)
     for (uint32_t parent : pair)
       if (parent >= first) ++children[parent - first];
-  // A work list, last added first (children before their parents): a point that stays is tried
-  // again only when a neighbour goes (only then can the answer change: the rest of the CDT and of
-  // the PLC is the same), or when its last child goes.
+  // A work list: a point that stays is tried again only when a neighbour goes (only then can the
+  // answer change: the rest of the CDT and of the PLC is the same), or when its last child goes.
   std::deque<uint32_t> work;
   std::vector<char> queued(end - first, 0);
   const auto enqueue = [&](uint32_t w) {
     if (w >= first && !queued[w - first] && children[w - first] == 0) queued[w - first] = 1, work.push_back(w);
   };
-  for (uint32_t v = end; v-- > first;) enqueue(v);
+  // First every point, spread out: refinement makes them one after another along each segment, and
+  // deleting neighbours one after another grows each next cavity by the last one's (a segment's
+  // pieces merge into ever longer ones: stars of 60 tetrahedra and more on the pipe tees). In
+  // bit-reversed order of their creation (the last made first) each attempt is mostly a point's
+  // own star, and the plans of several threads rarely overlap (pipe_tee_fine, one thread: 106725
+  // attempts in 12.8 s before, 108439 in 9.4 s; 27074 points kept before, 27408 now).
+  for (const uint32_t k : spread_order(end - first)) enqueue(end - 1 - k);
   // With several threads the deletions of the next points on the list are worked out at once
   // (EditableCdt::plan_removal) and applied in list order, as long as the next plan is current; a
   // plan that an earlier deletion made stale (it changed the plan's star) is worked out again with
