@@ -408,7 +408,7 @@ TEST(EditableCdt, PlansCommittedInOrderAgreeWithRemoveVertex) {
   ASSERT_GT(end - first, 50u);
 
   std::vector<uint32_t> order;
-  for (uint32_t v = end; v-- > first;) order.push_back(v);  // last added first, as the deletion pass goes
+  for (uint32_t v = end; v-- > first;) order.push_back(v);  // last added first
   for (const std::string how : {"last first", "first first", "shuffled"}) {
     if (how == "first first") std::reverse(order.begin(), order.end());
     if (how == "shuffled") std::shuffle(order.begin(), order.end(), std::mt19937_64(5));

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/validate.h"
@@ -152,6 +153,28 @@ TEST(SteinerVsTetgen, CadPartsWithRoundingNoiseMeshByDefault) {
     const Plc<3> noisy = sweepcdt::testing::with_cad_noise(io::import_plc(folder / file), fraction, 1);
     default_mesh_against_tetgen(noisy, std::string(file) + " with noise " + std::to_string(fraction).substr(0, 3), true);
   }
+}
+
+// The deletion pass tries every Steiner point (remove_steiner.cpp: spread out first) and tries a
+// refused one again whenever a neighbour goes, so none of the points it keeps can go from its
+// result. On pipe_tee_std every point is made from its input edge's ends (float32 coordinates), so
+// none is kept for another's sake (the parent rule): each must be refused now.
+TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
+  const Plc<3> plc = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "pipe_tee_std.stl");
+  Options options = mesh_defaults();
+  CdtStatistics stats;
+  options.statistics = &stats;
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(plc, options, &refined);
+  ASSERT_GT(stats.steiner_points_removed, 1000u);
+  ASSERT_GT(stats.steiner_points, 1000u);
+  EditableCdt<3> mesh(refined, tri);
+  std::vector<uint32_t> neighbours;
+  std::vector<uint32_t> deletable;
+  for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v)
+    if (mesh.try_commit_removal(mesh.plan_removal(v), neighbours)) deletable.push_back(v);
+  EXPECT_TRUE(deletable.empty()) << deletable.size() << " of " << stats.steiner_points << " kept points can go, the first "
+                                 << (deletable.empty() ? 0 : deletable.front());
 }
 
 TEST(SteinerVsTetgen, TetgenIsInstalled) {
