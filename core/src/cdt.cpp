@@ -16,6 +16,7 @@
 #include "regions.h"
 #include "relabel.h"
 #include "edit/remove_steiner.h"
+#include "refined_check.h"
 #include "steiner/refine.h"
 #include "sweep/sweep_cdt.h"
 #include "sweepcdt/perturbation_order.h"
@@ -146,8 +147,10 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       // other): the input was valid, so that is no input error but a failure to find Steiner points.
       // Without Steiner points nothing was rounded: each facet was only re-triangulated by flips in
       // its own exact plane, which keeps it the same polygon, so the checked input stands for it.
+      // With them, so does every facet whose points lie exactly on it: only the others are tested
+      // again (refined_check.h).
       try {
-        if (!refined.steiner_on.empty()) check(refined.plc, options.threads);
+        if (!refined.steiner_on.empty()) detail::check_refined(refined.plc, refined.off_input, options.threads);
       } catch (const PlcError& e) {
         throw NoCdtError("Steiner points: rounding broke the refined PLC (" + e.problems().front().message +
                              ", in the refined PLC's numbering): two facets lie within rounding of each other there",

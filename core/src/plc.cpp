@@ -4,10 +4,12 @@
 #include <cstring>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "box_tree.h"
 #include "parallel.h"
+#include "refined_check.h"
 #include "simplex_intersection.h"
 #include "sweepcdt/plc.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -154,8 +156,10 @@ std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems)
 }
 
 // Pairs of simplices whose boxes overlap, tested exactly; in parts on `threads` threads (parallel.h).
+// `suspect`, when given: only the pairs with a suspect simplex (check_refined()).
 template <int D>
-void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems, unsigned threads) {
+void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems, unsigned threads,
+                         const std::vector<char>* suspect = nullptr) {
   std::vector<detail::Box<D>> boxes(plc.num_simplices());
   for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(simplex_coords(plc, j).data(), D);
   const detail::BoxTree<D> tree(boxes);
@@ -163,11 +167,12 @@ void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, Pro
   std::vector<ProblemList> found(detail::parts_for(boxes.size(), threads), ProblemList(problems.limit()));
   detail::for_each_part(boxes.size(), threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; ++j) {
-      if (!usable[j]) continue;
+      if (!usable[j] || (suspect && !(*suspect)[j])) continue;
       const auto a = simplex_coords(plc, j);
       const auto ida = simplex_ids(plc, j);
       tree.for_each_overlap(boxes[j], [&](uint32_t k) {
-        if (k <= j || !usable[k]) return;
+        // Each pair once: from its first simplex, or from its suspect one.
+        if (k == j || !usable[k] || (k < j && (!suspect || (*suspect)[k]))) return;
         if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
           found[part].add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
       });
@@ -226,6 +231,26 @@ void check(const Plc<D>& plc, unsigned threads) {
   auto problems = find_problems<D>(plc, 10, &total, nullptr, threads);
   if (total > 0) throw PlcError(std::move(problems), total);
 }
+
+namespace detail {
+
+template <int D>
+void check_refined(const Plc<D>& plc, const std::vector<char>& suspect, unsigned threads) {
+  if (suspect.size() != plc.num_simplices()) throw std::invalid_argument("check_refined: one flag per simplex");
+  ProblemList problems(10);
+  if (check_structure(plc, problems)) {
+    check_duplicate_points(plc, problems);
+    const auto usable = check_simplex_shapes(plc, problems);
+    check_intersections(plc, usable, problems, threads, &suspect);
+  }
+  if (problems.total() > 0) {
+    const uint64_t total = problems.total();
+    throw PlcError(problems.take(), total);
+  }
+}
+template void check_refined<3>(const Plc<3>&, const std::vector<char>&, unsigned);
+
+}  // namespace detail
 
 #define SWEEPCDT_INSTANTIATE(D)                                                                    \
   template struct Plc<D>;                                                                          \

@@ -2,8 +2,13 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
+#include "refined_check.h"
+#include "sweepcdt/error.h"
 #include "sweepcdt/plc.h"
+#include "sweepcdt/triangulation.h"
 #include "test_shapes.h"
 
 using namespace sweepcdt;
@@ -172,6 +177,38 @@ TEST(PlcCheck, DentThroughTheBoxIsFound) {
   const auto problems = find_problems(box, 10, &total);
   EXPECT_GT(total, 0u);
   for (const auto& p : problems) EXPECT_EQ(p.kind, PlcProblemKind::Intersection);
+}
+
+// check_refined() (refined_check.h) tests exactly the pairs with a suspect simplex: with every
+// simplex suspect it finds what check() finds; with the dented vertex's triangles suspect (each
+// intersection has one) it finds them all; with none suspect it trusts the rest and finds nothing.
+TEST(PlcCheck, RefinedCheckTestsThePairsWithASuspectSimplex) {
+  Plc<3> box = grid_box_surface(8);
+  uint32_t dented = kNone;
+  for (uint32_t i = 0; i < box.num_points(); ++i)
+    if (box.points[3 * i] == 4 && box.points[3 * i + 1] == 4 && box.points[3 * i + 2] == 8) dented = i;
+  ASSERT_NE(dented, kNone);
+  std::vector<char> none(box.num_simplices(), 0), all(box.num_simplices(), 1), at_dent(box.num_simplices(), 0);
+  for (std::size_t j = 0; j < box.num_simplices(); ++j)
+    for (int k = 0; k < 3; ++k) at_dent[j] |= box.simplices[3 * j + k] == dented;
+  EXPECT_NO_THROW(detail::check_refined(box, all));  // still valid
+  box.points[3 * dented + 2] = -1;  // its triangles pierce the bottom face
+  uint64_t expected = 0;
+  find_problems(box, 10, &expected);
+  ASSERT_GT(expected, 0u);
+  const auto found = [&](const std::vector<char>& suspect) -> uint64_t {
+    try {
+      detail::check_refined(box, suspect);
+    } catch (const PlcError& e) {
+      for (const auto& p : e.problems()) EXPECT_EQ(p.kind, PlcProblemKind::Intersection);
+      return e.total();
+    }
+    return 0;
+  };
+  EXPECT_EQ(found(all), expected);
+  EXPECT_EQ(found(at_dent), expected);
+  EXPECT_EQ(found(none), 0u);
+  EXPECT_THROW(detail::check_refined(box, std::vector<char>(3, 1)), std::invalid_argument);
 }
 
 TEST(PlcCheck, Segments2D) {

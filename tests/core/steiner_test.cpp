@@ -13,6 +13,7 @@
 #include <gmpxx.h>
 
 #include "cad_noise.h"
+#include "refined_check.h"
 #include "steiner/refine.h"
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -308,3 +309,35 @@ TEST(Steiner, PointsOnASegmentAreSplitsOfItsInputEnds) {
   EXPECT_GE(deepest, 4) << "a segment split again and again, each point from its input ends";
   EXPECT_GT(from_pieces, 0u) << "segments whose difference rounds are split piece by piece";
 }
+
+// The refined PLC is checked again only where rounding may have changed it (refined_check.h): the
+// facets holding a Steiner point off its segment or inside them. So every triangle left out has all
+// its points exactly in its input facet's plane, and both checks accept the refined fins.
+TEST(Steiner, OnlyFacetsWithPointsOffThemAreCheckedAgain) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 4; ++fin) {
+    xs.push_back(xs.back() + 0.02);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  const detail::RefinedPlc r = detail::refine(fins, mesh_defaults());
+  ASSERT_EQ(r.off_input.size(), r.plc.num_simplices());
+  std::size_t trusted = 0;
+  for (std::size_t t = 0; t < r.plc.num_simplices(); ++t) {
+    if (r.off_input[t]) continue;
+    ++trusted;
+    const uint32_t* input = fins.simplex(r.original[t]);
+    for (int i = 0; i < 3; ++i)
+      ASSERT_EQ(predicates::orient<3>({fins.point(input[0]), fins.point(input[1]), fins.point(input[2]), r.plc.point(r.plc.simplex(t)[i])}),
+                predicates::Sign::Zero)
+          << "refined triangle " << t << " is trusted, but its point " << r.plc.simplex(t)[i] << " is off its facet's plane";
+  }
+  std::printf("[ fins ] %zu of %zu refined triangles trusted\n", trusted, r.plc.num_simplices());
+  EXPECT_GT(trusted, 0u) << "nothing left out: the shortcut is not exercised";
+  EXPECT_LT(trusted, r.plc.num_simplices()) << "nothing checked again: the rounded points are not exercised";
+  EXPECT_NO_THROW(check(r.plc));
+  EXPECT_NO_THROW(detail::check_refined(r.plc, r.off_input));
+}
+

@@ -44,6 +44,7 @@ class Refiner {
       split_until_delaunay();  // flips the facets as it goes
     else
       flip_facets();
+    r_.off_input = facets_off_input();
     r_.plc.points = std::move(points_);
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
@@ -56,6 +57,25 @@ class Refiner {
 
  private:
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
+
+  // Per refined triangle: whether its facet holds a Steiner point that is not exactly on its input
+  // segment, strictly inside it (rounded off it, or a point inside the facet) — RefinedPlc::off_input.
+  std::vector<char> facets_off_input() const {
+    std::vector<char> off_facet(groups_.num_facets(), 0);
+    for (std::size_t t = 0; t < tris_.size(); ++t)
+      for (const uint32_t m : tris_[t])
+        if (!is_input(m) && !exactly_on_its_segment(m)) off_facet[groups_.facet[original_[t]]] = 1;
+    std::vector<char> off(tris_.size());
+    for (std::size_t t = 0; t < tris_.size(); ++t) off[t] = off_facet[groups_.facet[original_[t]]];
+    return off;
+  }
+  bool exactly_on_its_segment(uint32_t m) const {
+    const auto [u, v] = on_segment_[m];
+    if (u == kNone || !predicates::collinear<3>(p(u), p(v), p(m))) return false;
+    for (int k = 0; k < 3; ++k)  // strictly between u and v along an axis where they differ
+      if (p(u)[k] != p(v)[k]) return (p(u)[k] < p(m)[k] && p(m)[k] < p(v)[k]) || (p(v)[k] < p(m)[k] && p(m)[k] < p(u)[k]);
+    return false;
+  }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
 
   void split_until_delaunay() {

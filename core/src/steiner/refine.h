@@ -56,6 +56,9 @@ struct RefinedPlc {
   // ends of the piece it split, or a fold's two points.
   std::vector<std::array<uint32_t, 2>> made_from;
   uint64_t rounds = 0, facets = 0, flips = 0;
+  // Per refined triangle: its facet holds a Steiner point rounded off its input segment, or one
+  // inside the facet, so it may differ from the input's facet by rounding (refined_check.h).
+  std::vector<char> off_input;
   // The Delaunay tetrahedralization of plc.points that refinement kept (SteinerMode::Auto), which
   // the cavity sweep starts from (cavity/cavity_cdt.h) instead of computing it again.
   std::optional<DelaunayMesh> delaunay;
