@@ -3,8 +3,17 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace sweepcdt::detail {
+
+// Sorts a small tuple in place: an insertion sort, for the 2 to 6 ids of a facet or ridge key,
+// where std::sort's set-up costs more than the sorting.
+template <std::size_t N>
+void sort_tuple(std::array<uint32_t, N>& a) {
+  for (std::size_t i = 1; i < N; ++i)
+    for (std::size_t j = i; j > 0 && a[j] < a[j - 1]; --j) std::swap(a[j], a[j - 1]);
+}
 
 struct TupleHash {
   template <std::size_t N>

@@ -27,7 +27,7 @@ FacetKey<D> facet_key(const uint32_t* simplex, int opposite) {
   FacetKey<D> key;
   for (int i = 0, k = 0; i <= D; ++i)
     if (i != opposite) key[k++] = simplex[i];
-  std::sort(key.begin(), key.end());
+  sort_tuple(key);
   return key;
 }
 

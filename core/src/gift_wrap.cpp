@@ -34,7 +34,7 @@ using Key = std::array<uint32_t, D>;
 
 template <int D>
 Key<D> sorted(Key<D> k) {
-  std::sort(k.begin(), k.end());
+  sort_tuple(k);
   return k;
 }
 

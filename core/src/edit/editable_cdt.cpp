@@ -67,7 +67,7 @@ struct EditableCdt<D>::Impl {
   uint32_t* simplex(uint32_t t) { return simplices.data() + std::size_t{t} * (D + 1); }
   const uint32_t* simplex(uint32_t t) const { return simplices.data() + std::size_t{t} * (D + 1); }
   static Key sorted(Key k) {
-    std::sort(k.begin(), k.end());
+    detail::sort_tuple(k);
     return k;
   }
   // The facet of simplex t of `tri` opposite its vertex i, in the simplex's order.

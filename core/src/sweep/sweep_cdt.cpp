@@ -17,6 +17,7 @@
 #include <string>
 
 #include "../box_tree.h"
+#include "../facet_hash.h"
 #include "../tuple_map.h"
 #include "sweep_faces.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -40,7 +41,7 @@ FaceKey<D> facet_opposite(const std::array<uint32_t, D + 1>& s, int i) {
   FaceKey<D> key;
   for (int k = 0, j = 0; k <= D; ++k)
     if (k != i) key[j++] = s[k];
-  std::sort(key.begin(), key.end());
+  sort_tuple(key);
   return key;
 }
 
@@ -141,8 +142,8 @@ class Sweep {
     if (a.key.hi < b.key.lo) return true;
     if (b.key.hi < a.key.lo) return false;
     auto sa = a.s, sb = b.s;
-    std::sort(sa.begin(), sa.end());
-    std::sort(sb.begin(), sb.end());
+    sort_tuple(sa);
+    sort_tuple(sb);
     if (sa == sb) return false;
     if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
       return predicates::compare_circumcenters<D>(vertices(a.s), vertices(b.s)) == Sign::Negative;
@@ -203,7 +204,7 @@ class Sweep {
       std::array<uint32_t, D> own;
       std::copy_n(plc_.simplex(j), D, own.begin());
       FaceKey<D> key = own;
-      std::sort(key.begin(), key.end());
+      sort_tuple(key);
       const uint32_t id = add_face(key);
       Face<D>& f = faces_[id];
       f.constraint = static_cast<uint32_t>(j);
