@@ -1,8 +1,8 @@
 // Steiner points the CDT does not need after all (issue 17): refinement (steiner/refine.h) splits
 // every segment that is not Delaunay, but a CDT often exists without many of those points. Each is
 // deleted again (paper §5, EditableCdt) when the PLC left still has a CDT — the deletion checks
-// that exactly and is undone otherwise — last added first, from a work list (a point that stays
-// is tried again when a neighbour goes). The next deletions of the list are worked out on
+// that exactly and is undone otherwise — from a work list that holds every point first, spread
+// out in bit-reversed order of creation (a point that stays is tried again when a neighbour goes). The next deletions of the list are worked out on
 // `options.threads` threads and applied in list order: the result is one thread's.
 #pragma once
 #include <array>
