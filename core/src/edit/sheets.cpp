@@ -6,10 +6,12 @@
 #include <map>
 #include <numeric>
 #include <optional>
-#include <tuple>
 #include <string>
+#include <tuple>
 
 #include "../ids_text.h"
+#include "../segment_interior.h"
+#include "../steiner/facet_groups.h"  // edge_key
 #include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
@@ -174,7 +176,7 @@ class SheetBuilder {
           if (free.size() != 2) refuse(sheet, "it is a corner of a facet");
           const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
           const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
-          if (!strictly_between(a, v_, b)) refuse(sheet, "it is a corner of a facet");
+          if (!strictly_inside_segment<D>(point_(a), point_(v_), point_(b))) refuse(sheet, "it is a corner of a facet");
           closing = Ridge{std::min(a, b), std::max(a, b)};
         }
       }
@@ -190,15 +192,6 @@ class SheetBuilder {
         break;
       }
     return ab;
-  }
-
-  // a, v, b on one line (exactly) with v strictly between a and b.
-  bool strictly_between(uint32_t a, uint32_t v, uint32_t b) const {
-    const double *pa = point_(a), *pv = point_(v), *pb = point_(b);
-    if (!predicates::collinear<D>(pa, pv, pb)) return false;
-    for (int i = 0; i < D; ++i)
-      if (pa[i] != pb[i]) return (pa[i] < pv[i] && pv[i] < pb[i]) || (pb[i] < pv[i] && pv[i] < pa[i]);
-    return false;
   }
 
   // The (D-1)-dimensional star CDT of the sheet's polytope without v, on its projection.
@@ -355,7 +348,7 @@ class SheetBuilder {
       for (uint32_t t = 0; t < fill.size(); ++t)
         for (int i = 0; i < 3; ++i) {
           const uint32_t x = fill[t][(i + 1) % 3], y = fill[t][(i + 2) % 3];
-          sides.push_back({uint64_t{std::min(x, y)} << 32 | std::max(x, y), t, i});
+          sides.push_back({edge_key(x, y), t, i});
         }
       std::sort(sides.begin(), sides.end());
       bool flipped = false;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "../segment_interior.h"
 #include "delaunay3.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
@@ -71,10 +72,7 @@ class Refiner {
   }
   bool exactly_on_its_segment(uint32_t m) const {
     const auto [u, v] = on_segment_[m];
-    if (u == kNone || !predicates::collinear<3>(p(u), p(v), p(m))) return false;
-    for (int k = 0; k < 3; ++k)  // strictly between u and v along an axis where they differ
-      if (p(u)[k] != p(v)[k]) return (p(u)[k] < p(m)[k] && p(m)[k] < p(v)[k]) || (p(v)[k] < p(m)[k] && p(m)[k] < p(u)[k]);
-    return false;
+    return u != kNone && strictly_inside_segment<3>(p(u), p(m), p(v));
   }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
 
