@@ -104,6 +104,42 @@ TEST(FastPath, CollinearTriplesOrient3) {
   EXPECT_GT(zeros, cases / 6) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
+// collinear<3>'s fast "yes" (exactly_collinear: exact differences, then the cross product's
+// products compared exactly) on the same triples: Steiner-like points c = a + t (b - a), exactly on
+// the line where the arithmetic was exact, nudged by one ulp, products that differ only in their
+// remainders, at every scale, against the rational reference (each projection's orientation zero).
+TEST(FastPath, CollinearTriples) {
+  Rng rng(0xc0112);
+  int on_line = 0, off_line = 0;
+  for (int n = 0; n < 3000; ++n) {
+    std::array<Point<3>, 3> pts;
+    for (auto& p : pts)
+      for (int k = 0; k < 3; ++k) p[k] = n % 2 ? static_cast<float>(uniform(rng, -100.0, 100.0)) : uniform_int(rng, -8, 8);
+    const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
+    for (int k = 0; k < 3; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
+    if (n % 3 == 1) pts[2][n % 7 % 3] = std::nextafter(pts[2][n % 7 % 3], 1e300);
+    if (n % 4 == 3) {  // (0, 0, 0), (1, 3, 0), (x, fl(3x), 0): the products 3x and fl(3x) differ only below rounding
+      const double x = 1 + uniform_int(rng, 0, 1 << 20) * 0x1p-51 + 0x1p-52;
+      pts = {Point<3>{0, 0, 0}, Point<3>{1, 3, 0}, Point<3>{x, 3 * x, 0}};
+    }
+    std::swap(pts[uniform_int(rng, 0, 2)], pts[uniform_int(rng, 0, 2)]);
+    const double s = kScales[n % std::size(kScales)];
+    for (auto& p : pts) p = scaled<3>(p, s);
+    bool expected = true;
+    for (int i = 0; i < 3 && expected; ++i)
+      for (int j = i + 1; j < 3 && expected; ++j) {
+        std::vector<ref::Vec> q;
+        for (const auto& p : pts) q.push_back({ref::exact(p[i]), ref::exact(p[j])});
+        expected = ref::orient(q) == 0;
+      }
+    ASSERT_EQ(pr::collinear<3>(pts[0].data(), pts[1].data(), pts[2].data()), expected)
+        << dump<3>(std::array<const double*, 3>{pts[0].data(), pts[1].data(), pts[2].data()});
+    (expected ? on_line : off_line)++;
+  }
+  EXPECT_GT(on_line, 500);
+  EXPECT_GT(off_line, 500);
+}
+
 // orient2's and orient3's small-range exact stage (orient_small.h): coordinates that are multiples
 // of 2^low below 2^(low + 61) — D + 1 points of a hyperplane with float coordinates (the last an
 // affine combination with few-bit weights, as Steiner points are), or lattice points on one — exactly

@@ -1,6 +1,7 @@
 // compare_circumcenters, compare_power and compare_power_tuples (paper §3 keys, §6 perturbation)
 // against perturbed circumspheres solved in rationals, plus their consistency with the perturbed
 // insphere and the sides of a shared facet (Theorems 1 and 2).
+#include <limits>
 #include <set>
 
 #include "predicate_test_util.h"
@@ -132,6 +133,72 @@ TYPED_TEST(SweepKeys, PerturbedKeysMatchReferenceOnGrid) {
   EXPECT_EQ(budget.failures, 0) << "of " << cases << " cases";
   EXPECT_GT(ties, cases / 20) << "too few unperturbed ties: the perturbation is not exercised";
   EXPECT_GT(power_ties, cases / 20);
+}
+
+// The star sweep's order (compare_power_sequences) where it matters most: the centre p on an edge ab
+// that both simplices share (a deleted Steiner point on the segment it merges), so that their powers
+// at p tie exactly, perturbation included, and the tie-breaking points q_k decide — mostly by the
+// keys' enclosures (power_order_if_apart), else exactly. Against the perturbed spheres in rationals.
+TYPED_TEST(SweepKeys, StarOrderPastATieAtTheCentreMatchesReference) {
+  constexpr int D = TypeParam::value;
+  Rng rng(0x6e750007 + D);
+  const Pool<D> pool(key_pool<D>(), rng);
+  FailureBudget budget;
+  int decided_later = 0;
+  const int cases = D <= 3 ? 1500 : 600;
+  for (int n = 0; n < cases; ++n) {
+    // s = {a, b, ...} and t = {a, b, ...} sharing 2..D of their vertices.
+    auto s = random_simplex<D>(pool, rng);
+    pr::Vertices<D + 1> t;
+    do {
+      t = s;
+      for (int slot = 2; slot <= D; ++slot)
+        if (uniform_int(rng, 0, 1) == 1 || slot == D) {
+          pr::Vertex v;
+          do v = pool.vertex(std::uniform_int_distribution<std::size_t>(0, pool.size() - 1)(rng));
+          while (std::any_of(t.begin(), t.end(), [&](const pr::Vertex& w) { return w.id == v.id; }));
+          t[slot] = v;
+        }
+    } while (degenerate<D>(t));
+    // The centre halfway along ab, then the tie-breaking points as star_sweep_cdt makes them: the
+    // centre with one coordinate changed; q_1 is sometimes a point the centre moves away from.
+    std::array<Point<D>, D + 2> points;
+    for (int k = 0; k < D; ++k) points[0][k] = (s[0].x[k] + s[1].x[k]) / 2;
+    for (int k = 2; k < D + 2; ++k) {
+      points[k] = points[0];
+      points[k][k - 2] = points[0][k - 2] == 0 ? 1 : -points[0][k - 2];
+    }
+    std::array<int8_t, D + 2> toward;
+    toward.fill(1);
+    points[1] = points[2];
+    if (uniform_int(rng, 0, 1) == 1) {
+      points[1] = pool.pts[std::uniform_int_distribution<std::size_t>(0, pool.size() - 1)(rng)];
+      toward[1] = -1;
+    }
+    std::array<pr::Vertex, D + 2> delta;
+    for (int k = 0; k < D + 2; ++k) delta[k] = {points[k].data(), std::numeric_limits<uint32_t>::max()};
+    std::shuffle(s.begin(), s.end(), rng);
+    std::shuffle(t.begin(), t.end(), rng);
+
+    auto all_ids = ids_of(s);
+    for (uint32_t id : ids_of(t)) all_ids.push_back(id);
+    const ref::EpsTable eps(all_ids);
+    const auto ss = sphere<D>(s, &eps), st = sphere<D>(t, &eps);
+    int expected = 0;
+    for (int k = 0; k < D + 2 && expected == 0; ++k) {
+      const ref::Vec q = vec<D>(points[k].data());
+      expected = toward[k] * ref::sign(ref::power(ss, q) - ref::power(st, q));
+      decided_later += k == 1 && expected != 0;
+    }
+    const Sign got = pr::compare_power_sequences<D>(s, t, delta.data(), toward.data(), D + 2);
+    if (pr::to_int(got) != expected && budget.fail())
+      ADD_FAILURE() << "compare_power_sequences<" << D << "> expected " << sign_name(expected) << ", got " << sign_name(got)
+                    << "\n" << dump_pair<D>(s, t) << dump<D>(delta);
+    if (pr::compare_power_sequences<D>(t, s, delta.data(), toward.data(), D + 2) != -got && budget.fail())
+      ADD_FAILURE() << "compare_power_sequences<" << D << "> not antisymmetric\n" << dump_pair<D>(s, t);
+  }
+  EXPECT_EQ(budget.failures, 0) << "of " << cases << " cases";
+  EXPECT_GT(decided_later, cases / 2) << "too few ties at the centre: the case is not exercised";
 }
 
 // q need not be a vertex; q a vertex of s or t, or of both, is the interesting case.
