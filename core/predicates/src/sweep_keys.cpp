@@ -288,20 +288,13 @@ Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Ver
   return (r != Sign::Zero ? r : power_difference_perturbed<D>(s, t, q)) * sigma;
 }
 
-// s and t share a facet f (t's vertices but its apex b). Then Psi_x(s) - Psi_x(t) is an affine
-// function of x that vanishes on aff(f), perturbation included (both perturbed spheres pass through
-// f's lifted points): lambda * orient(f, x). At b it is the perturbed height of b's lifted point over
-// s's lifted hyperplane, negative iff b is inside s's perturbed circumsphere. So the tuple's first
-// non-zero entry belongs to the first delta vertex off aff(f), and its sign needs one perturbed
-// insphere and a few orientations — instead of exact zeros, term by term, whenever a delta vertex
-// lies on aff(f) (the star sweep's centre on a facet through it, seeds on CAD planes).
 // sign(Psi_q(s) - Psi_q(t)) when the enclosures of the two powers (power_interval) are apart — then
 // the unperturbed powers differ and the perturbation cannot change the order —, else nullopt. Past
 // an exact tie at Delta_0 the next entries mostly differ clearly: the star sweep's centre on the
 // segment it merges is on the line of every simplex's edge ab there, so all their powers at it are
-// |pa| |pb| (pipe_tee_std: 44% of the exact comparisons, plus the pairs sharing a facet through ab),
+// |pa| |pb| (41% of the star sweeps' exact comparisons on pipe_tee_std; most others share a facet),
 // and two hand-written filters decide the next entry instead of the generic filter and often its
-// exact stage (sweep_keys.cpp's PowerDifference: about 7000 instructions a comparison).
+// exact stage (PowerDifference: about 7000 instructions a comparison).
 template <int D>
 std::optional<Sign> power_order_if_apart(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const double* q) {
   const KeyInterval a = power_interval<D>(s, q), b = power_interval<D>(t, q);
@@ -310,6 +303,13 @@ std::optional<Sign> power_order_if_apart(const Vertices<D + 1>& s, const Vertice
   return std::nullopt;  // overlapping, or NaN
 }
 
+// s and t share a facet f (t's vertices but its apex b). Then Psi_x(s) - Psi_x(t) is an affine
+// function of x that vanishes on aff(f), perturbation included (both perturbed spheres pass through
+// f's lifted points): lambda * orient(f, x). At b it is the perturbed height of b's lifted point over
+// s's lifted hyperplane, negative iff b is inside s's perturbed circumsphere. So the tuple's first
+// non-zero entry belongs to the first delta vertex off aff(f), and its sign needs one perturbed
+// insphere and a few orientations — instead of exact zeros, term by term, whenever a delta vertex
+// lies on aff(f) (the star sweep's centre on a facet through it, seeds on CAD planes).
 template <int D>
 Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>& t, int apex, const Vertex* delta, const int8_t* toward, int n) {
   const auto side = [&](const double* x) {
