@@ -69,6 +69,25 @@ void equal_points_case() {
 TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
 TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
 
+// Case n of the triples below: points 0..2 a, b, c (c on ab or one ulp off it), the rest random.
+template <std::size_t N>
+std::array<Point<3>, N> steiner_like_triple(Rng& rng, int n) {
+  std::array<Point<3>, N> pts;
+  for (auto& p : pts)
+    for (int k = 0; k < 3; ++k) p[k] = n % 2 ? static_cast<float>(uniform(rng, -100.0, 100.0)) : uniform_int(rng, -8, 8);
+  const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
+  for (int k = 0; k < 3; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
+  if (n % 3 == 1) pts[2][n % 7 % 3] = std::nextafter(pts[2][n % 7 % 3], 1e300);
+  if (n % 3 == 2) pts[2][n % 5 % 3] = std::nextafter(pts[2][n % 5 % 3], -1e300);
+  if (n % 4 == 3) {  // b - a = (1, 3, 0), c - a = (x, fl(3x), 0): the products 3x and fl(3x) differ only below rounding
+    const double x = 1 + uniform_int(rng, 0, 1 << 20) * 0x1p-51 + 0x1p-52;
+    pts[0] = {0, 0, 0};
+    pts[1] = {1, 3, 0};
+    pts[2] = {x, 3 * x, 0};
+  }
+  return pts;
+}
+
 // Three of orient3's four points on one line (orientation.cpp's collinear fast path): c = a + t (b - a)
 // with t of few bits, as Steiner points split segments, on float-like and grid coordinates — exactly
 // collinear where the arithmetic was exact, not quite where it rounded — and c moved by one ulp
@@ -80,19 +99,7 @@ TEST(FastPath, CollinearTriplesOrient3) {
   FailureBudget budget;
   int zeros = 0, cases = 0;
   for (int n = 0; n < 3000; ++n) {
-    std::array<Point<3>, 5> pts;
-    for (auto& p : pts)
-      for (int k = 0; k < 3; ++k) p[k] = n % 2 ? static_cast<float>(uniform(rng, -100.0, 100.0)) : uniform_int(rng, -8, 8);
-    const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
-    for (int k = 0; k < 3; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
-    if (n % 3 == 1) pts[2][n % 7 % 3] = std::nextafter(pts[2][n % 7 % 3], 1e300);
-    if (n % 3 == 2) pts[2][n % 5 % 3] = std::nextafter(pts[2][n % 5 % 3], -1e300);
-    if (n % 4 == 3) {  // b - a = (1, 3, 0), c - a = (x, fl(3x), 0): the products 3x and fl(3x) differ only below rounding
-      const double x = 1 + uniform_int(rng, 0, 1 << 20) * 0x1p-51 + 0x1p-52;
-      pts[0] = {0, 0, 0};
-      pts[1] = {1, 3, 0};
-      pts[2] = {x, 3 * x, 0};
-    }
+    std::array<Point<3>, 5> pts = steiner_like_triple<5>(rng, n);
     std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);  // the triple anywhere among the four
     std::swap(pts[uniform_int(rng, 0, 3)], pts[uniform_int(rng, 0, 3)]);
     const double s = kScales[n % std::size(kScales)];
@@ -112,16 +119,7 @@ TEST(FastPath, CollinearTriples) {
   Rng rng(0xc0112);
   int on_line = 0, off_line = 0;
   for (int n = 0; n < 3000; ++n) {
-    std::array<Point<3>, 3> pts;
-    for (auto& p : pts)
-      for (int k = 0; k < 3; ++k) p[k] = n % 2 ? static_cast<float>(uniform(rng, -100.0, 100.0)) : uniform_int(rng, -8, 8);
-    const double t = uniform_int(rng, 1, (1 << 20) - 1) / double(1 << 20);
-    for (int k = 0; k < 3; ++k) pts[2][k] = pts[0][k] + t * (pts[1][k] - pts[0][k]);
-    if (n % 3 == 1) pts[2][n % 7 % 3] = std::nextafter(pts[2][n % 7 % 3], 1e300);
-    if (n % 4 == 3) {  // (0, 0, 0), (1, 3, 0), (x, fl(3x), 0): the products 3x and fl(3x) differ only below rounding
-      const double x = 1 + uniform_int(rng, 0, 1 << 20) * 0x1p-51 + 0x1p-52;
-      pts = {Point<3>{0, 0, 0}, Point<3>{1, 3, 0}, Point<3>{x, 3 * x, 0}};
-    }
+    std::array<Point<3>, 3> pts = steiner_like_triple<3>(rng, n);
     std::swap(pts[uniform_int(rng, 0, 2)], pts[uniform_int(rng, 0, 2)]);
     const double s = kScales[n % std::size(kScales)];
     for (auto& p : pts) p = scaled<3>(p, s);
