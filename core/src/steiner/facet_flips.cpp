@@ -26,21 +26,49 @@ class Flipper {
         sides_(interior_edge_sides(f.triangles, f.segments, &pending_)) {}
 
   uint64_t run() {
-    // Lawson's flips end for exactly coplanar facets; the cap guards facets coplanar only to within
-    // rounding, where the in-circle test is approximate.
-    const uint64_t cap = 10 * uint64_t{f_.triangles.size()} + 1000;
-    uint64_t flips = 0;
-    while (!pending_.empty() && flips < cap) {
+    // Lawson's flips end on an exactly flat facet: an edge flipped away never comes back, so a facet
+    // of k points takes at most k (k - 1) / 2 flips, whatever the triangulation it starts from (a
+    // fan of long thin triangles needs about that many). On a facet flat only to within rounding
+    // (folds) the in-circle test is approximate and could cycle: those flips have a cap of their own.
+    const uint64_t flat_cap = lawson_bound();
+    const uint64_t folded_cap = 10 * uint64_t{f_.triangles.size()} + 1000;
+    uint64_t flat = 0, folded = 0;
+    while (!pending_.empty() && flat <= flat_cap && folded <= folded_cap) {
       const uint64_t key = pending_.back();
       pending_.pop_back();
       const auto it = sides_.find(key);
       if (it == sides_.end() || it->second[1] == kNone) continue;
-      if (try_flip(key, it->second[0], it->second[1])) ++flips;
+      switch (try_flip(key, it->second[0], it->second[1])) {
+        case Flip::None: break;
+        case Flip::Flat: ++flat; break;
+        case Flip::Folded: ++folded; break;
+      }
     }
-    return flips;
+    return flat + folded;
   }
 
  private:
+  enum class Flip { None, Flat, Folded };
+
+  // The sum over facets of k (k - 1) / 2, k = the facet's points: triangles joined across their
+  // non-segment edges are one facet, and a facet of t triangles has at most t + 2 points (Euler).
+  uint64_t lawson_bound() const {
+    std::vector<uint32_t> parent(f_.triangles.size());
+    for (uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+    const auto root = [&](uint32_t t) {
+      while (parent[t] != t) t = parent[t] = parent[parent[t]];
+      return t;
+    };
+    for (const auto& [key, pair] : sides_)
+      if (pair[1] != kNone) parent[root(pair[0])] = root(pair[1]);
+    std::vector<uint64_t> size(parent.size(), 0);
+    for (uint32_t t = 0; t < parent.size(); ++t) ++size[root(t)];
+    uint64_t bound = 0;
+    for (const uint64_t n : size)
+      if (n > 0) bound += (n + 2) * (n + 1) / 2;
+    return bound;
+  }
+
   const double* p(uint32_t v) const { return f_.points.data() + 3 * std::size_t{v}; }
 
   bool on_common_segment(uint32_t c, uint32_t d) const {
@@ -77,20 +105,20 @@ class Flipper {
     return (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
   }
 
-  bool try_flip(uint64_t key, uint32_t t1, uint32_t t2) {
+  Flip try_flip(uint64_t key, uint32_t t1, uint32_t t2) {
     // t1 = (a, b, c) runs a -> b; t2 must run b -> a with third vertex d.
     Triangle& s = f_.triangles[t1];
     Triangle& u = f_.triangles[t2];
     const uint32_t ka = static_cast<uint32_t>(key >> 32), kb = static_cast<uint32_t>(key);
     int i = 0;
     while (i < 3 && !((s[i] == ka || s[i] == kb) && (s[(i + 1) % 3] == ka || s[(i + 1) % 3] == kb))) ++i;
-    if (i == 3) return false;
+    if (i == 3) return Flip::None;
     const uint32_t a = s[i], b = s[(i + 1) % 3], c = s[(i + 2) % 3];
     int j = 0;
     while (j < 3 && !(u[j] == b && u[(j + 1) % 3] == a)) ++j;
-    if (j == 3) return false;  // orientations disagree: not a facet of one orientation
+    if (j == 3) return Flip::None;  // orientations disagree: not a facet of one orientation
     const uint32_t d = u[(j + 2) % 3];
-    if (c == d || on_common_segment(c, d)) return false;
+    if (c == d || on_common_segment(c, d)) return Flip::None;
 
     // Strictly convex quadrilateral a, d, b, c in the facet's plane.
     const int drop = drop_axis(t1);
@@ -99,27 +127,29 @@ class Flipper {
     };
     const Sign cda = o(c, d, a), cdb = o(c, d, b), abc = o(a, b, c), abd = o(a, b, d);
     if (cda == Sign::Zero || cdb == Sign::Zero || cda == cdb || abc == Sign::Zero || abd == Sign::Zero || abc == abd)
-      return false;
+      return Flip::None;
 
     if (delaunay_edge_) {
       // A fold (not exactly flat) that is not Delaunay, whose other diagonal is.
-      if (predicates::orient<3>({p(a), p(b), p(c), p(d)}) == Sign::Zero) return false;
-      if ((*delaunay_edge_)(a, b) || !(*delaunay_edge_)(c, d)) return false;
-      return flip(key, t1, t2, a, b, c, d);
+      if (predicates::orient<3>({p(a), p(b), p(c), p(d)}) == Sign::Zero) return Flip::None;
+      if ((*delaunay_edge_)(a, b) || !(*delaunay_edge_)(c, d)) return Flip::None;
+      flip(key, t1, t2, a, b, c, d);
+      return Flip::Folded;
     }
 
     // d inside the (perturbed) circumcircle of a, b, c?
     const Triangle abc_t{a, b, c};
     double e[3];
     for (int k = 0; k < 3; ++k) e[k] = p(a)[k] + normal(abc_t, k);
-    if (predicates::orient<3>({p(a), p(b), p(c), e}) == Sign::Zero) return false;
+    if (predicates::orient<3>({p(a), p(b), p(c), e}) == Sign::Zero) return Flip::None;
     if (!predicates::inside_circumsphere<3>({{{p(a), a}, {p(b), b}, {p(c), c}, {e, kAuxiliaryId}}}, {p(d), d}))
-      return false;
-    return flip(key, t1, t2, a, b, c, d);
+      return Flip::None;
+    flip(key, t1, t2, a, b, c, d);
+    return predicates::orient<3>({p(a), p(b), p(c), p(d)}) == Sign::Zero ? Flip::Flat : Flip::Folded;
   }
 
   // Flips ab to cd: (c, a, d) and (d, b, c) keep the facet's orientation.
-  bool flip(uint64_t key, uint32_t t1, uint32_t t2, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  void flip(uint64_t key, uint32_t t1, uint32_t t2, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
     f_.triangles[t1] = {c, a, d};
     f_.triangles[t2] = {d, b, c};
     sides_.erase(key);
@@ -128,7 +158,6 @@ class Flipper {
     moved(edge_key(b, c), t1, t2);
     for (uint64_t k : {edge_key(c, a), edge_key(a, d), edge_key(d, b), edge_key(b, c)})
       if (sides_.count(k)) pending_.push_back(k);
-    return true;
   }
 
   // Edge `key` now belongs to triangle `to` instead of `from`.

@@ -1,0 +1,105 @@
+// The facets' Lawson flips (steiner/facet_flips.h) end at each flat facet's 2D CDT from whatever
+// triangulation refinement hands them. Checked against the 2D CDT that cdt<2>() builds with the
+// sweep (an independent algorithm) on the same points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <unordered_set>
+#include <vector>
+
+#include "steiner/facet_flips.h"
+#include "steiner/facet_groups.h"
+#include "sweepcdt/cdt.h"
+
+using namespace sweepcdt;
+
+namespace {
+
+using Triangle = std::array<uint32_t, 3>;
+
+// A long thin triangle a b c in the plane z = 0 with k points on each of its edges (evenly spaced), triangulated
+// the way refinement splits it (steiner/refine.cpp: each split point joined to the opposite
+// vertex): a fan from c to the points of ab, then fans to the points of bc and ca from the
+// triangles holding those edges. Far from its CDT: the fan's long edges cross the CDT's strip of
+// short ones, and Lawson's flips take about k^2 / 2 of them.
+struct FannedFacet {
+  std::vector<double> points;  // n x 3
+  std::vector<Triangle> triangles;
+  std::unordered_set<uint64_t> segments;
+  std::vector<std::array<uint32_t, 2>> on_segment;
+
+  explicit FannedFacet(uint32_t k) {
+    add({0, 0}, {kNone, kNone});     // a = 0
+    add({4096, 0}, {kNone, kNone});  // b = 1
+    add({2048, 3}, {kNone, kNone});  // c = 2: the facet is 4096 long and 3 high
+    const auto edge_points = [&](uint32_t u, uint32_t v) {
+      std::vector<uint32_t> ids{u};
+      for (uint32_t i = 1; i <= k; ++i) {
+        const double t = static_cast<double>(i) / (k + 1);
+        add({points[3 * u] + t * (points[3 * v] - points[3 * u]), points[3 * u + 1] + t * (points[3 * v + 1] - points[3 * u + 1])},
+            {std::min(u, v), std::max(u, v)});
+        ids.push_back(static_cast<uint32_t>(points.size() / 3 - 1));
+      }
+      ids.push_back(v);
+      for (std::size_t i = 0; i + 1 < ids.size(); ++i) segments.insert(detail::edge_key(ids[i], ids[i + 1]));
+      return ids;
+    };
+    const std::vector<uint32_t> ab = edge_points(0, 1), bc = edge_points(1, 2), ca = edge_points(2, 0);
+    // The fan from c over ab; its last triangle (m, b, c) takes the fan over bc from m, its first
+    // (a, m', c) the fan over ca from m'.
+    for (std::size_t i = 1; i + 2 < ab.size(); ++i) triangles.push_back({ab[i], ab[i + 1], 2});
+    for (std::size_t i = 0; i + 1 < bc.size(); ++i) triangles.push_back({ab[ab.size() - 2], bc[i], bc[i + 1]});
+    for (std::size_t i = 0; i + 1 < ca.size(); ++i) triangles.push_back({ab[1], ca[i], ca[i + 1]});
+  }
+
+  void add(std::array<double, 2> xy, std::array<uint32_t, 2> segment) {
+    points.insert(points.end(), {xy[0], xy[1], 0.0});
+    on_segment.push_back(segment);
+  }
+};
+
+std::set<Triangle> canonical(const std::vector<Triangle>& triangles) {
+  std::set<Triangle> result;
+  for (Triangle t : triangles) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    result.insert(t);
+  }
+  return result;
+}
+
+// The 2D CDT of the facet's points with its boundary pieces as segments (the domain is the
+// convex hull, the big triangle), oriented counterclockwise as the facet is.
+std::set<Triangle> cdt_2d(const FannedFacet& facet) {
+  Plc<2> plc;
+  for (std::size_t i = 0; i < facet.points.size(); i += 3) plc.points.insert(plc.points.end(), {facet.points[i], facet.points[i + 1]});
+  for (const uint64_t key : facet.segments) plc.simplices.insert(plc.simplices.end(), {static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key)});
+  const Triangulation<2> t = cdt(plc);
+  std::vector<Triangle> triangles;
+  for (std::size_t j = 0; j < t.num_simplices(); ++j) {
+    const uint32_t* s = t.simplex(j);
+    const double* p = t.point(s[0]);
+    const double* q = t.point(s[1]);
+    const double* r = t.point(s[2]);
+    const bool ccw = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0;
+    triangles.push_back(ccw ? Triangle{s[0], s[1], s[2]} : Triangle{s[0], s[2], s[1]});
+  }
+  return canonical(triangles);
+}
+
+}  // namespace
+
+// The fan needs more flips than the cap that used to stop them (10 per triangle + 1000, meant for
+// facets flat only to within rounding): stopped there, the facet kept long edges that are not in
+// its CDT, and the refined PLC had no CDT (pipe_tee_std.stl when its splits came in another order).
+TEST(FacetFlips, FanOfAThinFacetReachesItsCdtPastTheRoundingCap) {
+  for (const uint32_t k : {3u, 31u, 511u}) {  // k + 1 a power of two: the points lie exactly on the edges
+    FannedFacet facet(k);
+    const std::set<Triangle> expected = cdt_2d(facet);
+    ASSERT_EQ(expected.size(), facet.triangles.size()) << k;
+    const uint64_t flips = detail::flip_facets_to_cdt({facet.points, facet.triangles, facet.segments, facet.on_segment});
+    EXPECT_EQ(canonical(facet.triangles), expected) << k << " points per edge, " << flips << " flips";
+    if (k == 511) EXPECT_GT(flips, 10 * facet.triangles.size() + 1000) << "the case no longer needs more flips than the old cap";
+  }
+}
