@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 shared="$root/../shared/data"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-inputs=$(ls "$root"/tests/data/cad/*.stl "$root"/tests/data/cad/*.obj)
+inputs=$(ls "$root"/tests/data/cad/*.stl "$root"/tests/data/cad/*.obj "$root"/tests/data/cad/*.ply)
 for f in off/femur.off off/icosahedron.off stl_ascii/t13_data_ascii.stl stl_binary/spot.stl stl_binary/torus.stl \
          stl_ascii/gearwheel_ascii.stl stl_binary/thingi_1706459.stl drc/knot1.drc glb/moon.glb drc/cube_att.drc; do
   if [ -f "$shared/$f" ]; then inputs="$inputs $shared/$f"; else echo "missing (skipped): $shared/$f"; fi

@@ -12,7 +12,7 @@ and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table an
 
 Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
-  (default files: tests/data/cad/*.stl, *.obj and the closed shared meshes)
+  (default files: tests/data/cad/*.stl, *.obj, *.ply and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
            tests/integration/steiner_vs_tetgen_test.cpp and more; steiner_bench --cad-noise makes them)
   --rotated: instead, the clean binary-STL parts turned by 23 degrees about (0.3, 0.5, 0.8) and
@@ -177,7 +177,8 @@ def main():
     cli = os.path.join(args.build, "plugin", "cli", "sweepcdt")
     converter = os.path.join(args.build, "bench", "steiner_bench")
     files = args.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.stl")) +
-                                 glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.obj"))) + \
+                                 glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.obj")) +
+                                 glob.glob(os.path.join(ROOT, "tests", "data", "cad", "*.ply"))) + \
         [os.path.join(SHARED, f) for f in SHARED_CLOSED if os.path.exists(os.path.join(SHARED, f))]
     noisy_dir = tempfile.TemporaryDirectory()
     if args.noise:

@@ -88,9 +88,9 @@ void FileProgress::report(const std::string& phase, uint64_t done, uint64_t tota
     char buf[64];
     std::string text = label_ + ": " + phase + " ";
     if (phase == "steiner points") {
-      // Between the sweeps of Steiner refinement, core reports the segments still to split, which
-      // shrink towards 0 — a count, not a fraction.
-      text += std::to_string(done) + " segments to split";
+      // During Steiner refinement core reports the points added so far — a count, not a fraction
+      // (how many more a surface needs is not known in advance).
+      text += std::to_string(done) + " points added";
     } else if (total > 0) {
       const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
       const int filled = static_cast<int>(f * kBarWidth);

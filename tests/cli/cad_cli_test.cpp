@@ -12,7 +12,7 @@ TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
   const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "cad";
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(folder))
-    if (entry.path().extension() == ".stl" || entry.path().extension() == ".obj") files.push_back(entry.path());
+    if (const auto ext = entry.path().extension(); ext == ".stl" || ext == ".obj" || ext == ".ply") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 20u) << folder;
   TempDir dir;

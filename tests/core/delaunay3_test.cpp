@@ -266,8 +266,9 @@ TEST(Delaunay3, Throws) {
 
 // DelaunayEdges (kept between Steiner rounds): after each batch of appended points, has_edge agrees
 // with the edges of the triangulation built from scratch, for every pair of points; and a pair that
-// may_have_changed calls unchanged really is (an edge exactly when it was one before the batch).
-// Random and grid points (ties decided by the perturbation).
+// may_have_changed calls unchanged really is (an edge exactly when it was one before the batch), and
+// a pair it may call changed has an end among changed_points (each listed once): refinement looks
+// only there. Random and grid points (ties decided by the perturbation).
 std::set<std::pair<uint32_t, uint32_t>> edges_of(const std::vector<double>& points) {
   std::set<std::pair<uint32_t, uint32_t>> edges;
   for (const Tet& t : detail::delaunay_tetrahedra(points))
@@ -281,24 +282,35 @@ void expect_incremental_edges(const std::vector<double>& all, const std::string&
   std::vector<double> points(all.begin(), all.begin() + 3 * (n / 4));
   detail::DelaunayEdges incremental(points);
   std::set<std::pair<uint32_t, uint32_t>> before = edges_of(points);
-  int unchanged = 0;
+  int unchanged = 0, partial = 0;
+  std::size_t before_end = n / 4;
   for (const std::size_t end : {n / 2, n / 2 + 1, 3 * n / 4, n}) {
     points.insert(points.end(), all.begin() + points.size(), all.begin() + 3 * end);
     incremental.insert_new_points();
     const auto after = edges_of(points);
+    const std::vector<uint32_t>& listed = incremental.changed_points();
+    const std::set<uint32_t> changed(listed.begin(), listed.end());
+    ASSERT_EQ(changed.size(), listed.size()) << what << ": a point listed twice";
+    for (uint32_t v = static_cast<uint32_t>(points.size() / 3 - (end - before_end)); v < end; ++v)
+      ASSERT_TRUE(changed.count(v)) << what << ": new point " << v << " not listed";
+    if (changed.size() < end) ++partial;
     for (uint32_t a = 0; a < end; ++a)
       for (uint32_t b = a + 1; b < end; ++b) {
         const bool edge = after.count({a, b}) > 0;
         ASSERT_EQ(incremental.has_edge(a, b), edge) << what << ": " << a << " " << b << " with " << end << " points";
         ASSERT_EQ(incremental.has_edge(b, a), edge) << what;
-        if (!incremental.may_have_changed(a, b)) {
+        if (incremental.may_have_changed(a, b))
+          ASSERT_TRUE(changed.count(a) || changed.count(b)) << what << ": " << a << " " << b << " may have changed, neither end listed";
+        else {
           ++unchanged;
           ASSERT_EQ(before.count({a, b}) > 0, edge) << what << ": " << a << " " << b << " changed unnoticed";
         }
       }
     before = after;
+    before_end = end;
   }
   EXPECT_GT(unchanged, 0) << what << ": may_have_changed never said no, so it was not tested";
+  EXPECT_GT(partial, 0) << what << ": every point always listed, so changed_points was not tested";
 }
 
 TEST(Delaunay3, EdgesKeptUpToDateAsPointsAreAdded) {

@@ -91,7 +91,7 @@ std::vector<std::filesystem::path> cad_parts() {
   const std::filesystem::path folder = std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad";
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.path().extension() == ".stl" || entry.path().extension() == ".obj") files.push_back(entry.path());
+    if (const auto ext = entry.path().extension(); ext == ".stl" || ext == ".obj" || ext == ".ply") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }

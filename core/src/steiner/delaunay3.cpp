@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <string>
 
@@ -115,6 +116,8 @@ class Delaunay3 {
   void build(const std::vector<uint32_t>& order, const std::function<void(std::size_t)>& inserted = {}) {
     vertex_tet_.assign(points_.size() / 3, kInfinite);
     touched_round_.assign(points_.size() / 3, round_);
+    changed_.resize(points_.size() / 3);
+    std::iota(changed_.begin(), changed_.end(), 0u);
     const std::vector<uint32_t> rest = start(order);
     cells_.reserve(7 * rest.size() + 16);
     constexpr std::size_t kReportEvery = 1024;
@@ -152,6 +155,8 @@ class Delaunay3 {
     first_new_ = static_cast<uint32_t>(first);
     ++round_;
     touched_round_.resize(n, round_);
+    changed_.resize(n - first);
+    std::iota(changed_.begin(), changed_.end(), static_cast<uint32_t>(first));
     const std::vector<double> added(points_.begin() + 3 * first, points_.end());
     for (const uint32_t k : brio_order(added)) insert(static_cast<uint32_t>(first + k));
   }
@@ -160,6 +165,9 @@ class Delaunay3 {
   // an edge between two vertices that were not both touched is still there, or still missing.
   bool touched(uint32_t v) const { return touched_round_[v] == round_; }
   bool inserted_last(uint32_t v) const { return v >= first_new_; }
+  std::size_t num_inserted() const { return vertex_tet_.size(); }
+  // The points touched (new ones included) by the last build/insert_new_points, each once.
+  const std::vector<uint32_t>& changed() const { return changed_; }
 
   // Whether ab is an edge: a search of the tetrahedra around a (ghosts included).
   bool has_edge(uint32_t a, uint32_t b) {
@@ -375,7 +383,10 @@ class Delaunay3 {
     grow_cavity(start, p);
     for (const uint32_t c : conflicts_) {
       for (const uint32_t v : cells_[c].v)
-        if (v != kInfinite) touched_round_[v] = round_;
+        if (v != kInfinite && touched_round_[v] != round_) {
+          touched_round_[v] = round_;
+          changed_.push_back(v);
+        }
       dead_[c] = 1;
       free_.push_back(c);
     }
@@ -493,6 +504,7 @@ class Delaunay3 {
   std::vector<uint32_t> vertex_tet_;  // per inserted point: a live tetrahedron holding it
   std::vector<uint32_t> star_;        // has_edge's search
   std::vector<uint32_t> touched_round_;  // per point: the last round (insert_new_points call) touching it
+  std::vector<uint32_t> changed_;        // the points touched_round_ marks with round_
   uint32_t round_ = 0;
   uint32_t first_new_ = 0;  // the first point of the last build/insert_new_points
   std::vector<uint32_t> conflicts_;
@@ -505,10 +517,11 @@ class Delaunay3 {
   uint32_t rng_ = 2463534242u;
 };
 
-void check_points(const std::vector<double>& points) {
+// From point `first` on (the points appended since the last check).
+void check_points(const std::vector<double>& points, std::size_t first = 0) {
   if (points.size() % 3 != 0) throw Error("delaunay_tetrahedra: the coordinate count is not a multiple of 3");
   if (points.size() / 3 >= kInfinite) throw Error("delaunay_tetrahedra: too many points");
-  for (std::size_t i = 0; i < points.size(); ++i)
+  for (std::size_t i = 3 * first; i < points.size(); ++i)
     if (!std::isfinite(points[i]))
       throw Error("delaunay_tetrahedra: point " + std::to_string(i / 3) + " has a non-finite coordinate");
 }
@@ -529,7 +542,7 @@ DelaunayEdges::DelaunayEdges(const std::vector<double>& points) : impl_(std::mak
 DelaunayEdges::~DelaunayEdges() = default;
 
 void DelaunayEdges::insert_new_points() {
-  check_points(impl_->points);
+  check_points(impl_->points, impl_->triangulation.num_inserted());
   impl_->triangulation.insert_new_points();
 }
 
@@ -541,6 +554,8 @@ bool DelaunayEdges::may_have_changed(uint32_t a, uint32_t b) const {
   const Delaunay3& t = impl_->triangulation;
   return (t.touched(a) && t.touched(b)) || t.inserted_last(a) || t.inserted_last(b);
 }
+
+const std::vector<uint32_t>& DelaunayEdges::changed_points() const { return impl_->triangulation.changed(); }
 
 std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points) {
   check_points(points);

@@ -58,6 +58,10 @@ class DelaunayEdges {
   // False when ab is an edge exactly when it was before the last insert_new_points: neither end is
   // new and some end lost no tetrahedron (every new edge has a new end). All true after construction.
   bool may_have_changed(uint32_t a, uint32_t b) const;
+  // The points the last insert_new_points inserted or took a tetrahedron from (all after
+  // construction), each once: every pair that may_have_changed has an end among them, so a caller
+  // can look at the edges near a change without scanning all of its own.
+  const std::vector<uint32_t>& changed_points() const;
   // The triangulation as it is (points inserted so far) with its adjacency.
   DelaunayMesh mesh() const;
 

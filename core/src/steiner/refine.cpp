@@ -22,7 +22,9 @@ using Triangle = std::array<uint32_t, 3>;
 using predicates::Sign;
 
 // Limits that keep a hostile input from running away (the concentric-shell rule terminates, but the
-// number of points it needs grows with the ratio of the longest segment to the smallest gap).
+// number of points it needs grows with the ratio of the longest segment to the smallest gap). The
+// budget bounds the passes of a round (each adds a point and costs what it changes); the rounds,
+// each a pass over the whole surface and its facets, have a limit of their own.
 constexpr uint64_t kMaxRounds = 200;
 std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points + 100000; }
 
@@ -76,42 +78,59 @@ class Refiner {
   }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
 
+  // Rounds: split every segment that is not Delaunay, then (pass after pass) those the new points
+  // made not Delaunay, looking only near the points each pass changed; then give each facet its 2D
+  // CDT and deal with the folds. The passes matter on strips of long thin triangles (where a hole
+  // meets a curved face): each split there makes the next diagonal not Delaunay, one per pass, a few
+  // hundred in a row, and a pass over the whole surface each time would cost the strip's length
+  // times the surface.
   void split_until_delaunay() {
     DelaunayEdges delaunay(points_);  // kept up to date as points are added
     for (;; ++r_.rounds) {
       delaunay.insert_new_points();  // the Steiner points of the last round
-      auto split = segments_not_in(delaunay);
-      std::size_t inside = 0;  // points put inside facets this round
-      if (split.empty()) {
-        // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
-        // rounding left in it when they are not Delaunay either (see folds_not_in).
-        flip_facets();
-        r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
-                                           [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
-        const std::vector<uint64_t> folds = folds_not_in(delaunay);
-        if (!folds.empty()) {
-          inside = split_folds_inside_facets(folds, split);
-          if (inside == 0 && split.empty()) split = make_segments(folds);
-        }
+      std::unordered_map<uint64_t, uint32_t> new_point;
+      for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
+        check_limits(split, 0);
+        for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
+        delaunay.insert_new_points();
+        report_progress();
       }
-      if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
-      if (split.empty() && inside == 0) {
+      if (!new_point.empty()) split_triangles(new_point);
+      // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
+      // rounding left in it when they are not Delaunay either (see folds_not_in).
+      flip_facets();
+      r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
+                                         [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
+      const std::vector<uint64_t> folds = folds_not_in(delaunay);
+      if (folds.empty()) {
         r_.delaunay = delaunay.mesh();
         return;
       }
-      if (r_.rounds == kMaxRounds || r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points))
-        throw NoCdtError("Steiner points: " + std::to_string(split.size() + inside) + " segments or folds still not Delaunay after " +
-                             std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) +
-                             " Steiner points, over the limit for this input (100 per input point + 100000); long thin "
-                             "triangles on faces that are flat only approximately need that many" +
-                             (options_.facets == FacetMode::Coplanar ? std::string()
-                                                                     : " (faces that are exactly flat can be merged: --facets coplanar)"),
-                         split.empty() ? std::vector<uint32_t>{} : std::vector<uint32_t>{static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
+      std::vector<uint64_t> split;
+      const std::size_t inside = split_folds_inside_facets(folds, split);
+      if (inside == 0 && split.empty()) split = make_segments(folds);
+      check_limits(split, inside);
+      report_progress();
       if (split.empty()) continue;
-      std::unordered_map<uint64_t, uint32_t> new_point;
+      new_point.clear();
       for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
       split_triangles(new_point);
     }
+  }
+
+  void report_progress() const {
+    if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
+  }
+
+  void check_limits(const std::vector<uint64_t>& split, std::size_t inside) const {
+    const bool over_budget = r_.steiner_on.size() + split.size() > steiner_budget(r_.num_input_points);
+    if (!over_budget && r_.rounds < kMaxRounds) return;
+    throw NoCdtError("Steiner points: " + std::to_string(split.size() + inside) + " segments or folds still not Delaunay after " +
+                         std::to_string(r_.rounds) + " rounds and " + std::to_string(r_.steiner_on.size()) + " Steiner points, over " +
+                         (over_budget ? "the limit for this input (100 per input point + 100000)" : "the limit of " + std::to_string(kMaxRounds) + " rounds") +
+                         "; long thin triangles on faces that are flat only approximately need that many" +
+                         (options_.facets == FacetMode::Coplanar ? std::string() : " (faces that are exactly flat can be merged: --facets coplanar)"),
+                     split.empty() ? std::vector<uint32_t>{} : std::vector<uint32_t>{static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
   }
 
   // Segments that are not Delaunay, each once, in triangle order (deterministic). A segment checked
@@ -128,6 +147,44 @@ class Refiner {
         if (groups_.segments.count(key) && marked.insert(key).second && !delaunay.has_edge(a, b)) split.push_back(key);
       }
     return split;
+  }
+
+  // The same, after a pass: only segments with an end that the pass changed can have changed (their
+  // other end changed too, or is new), in key order (deterministic).
+  std::vector<uint64_t> changed_segments_not_in(DelaunayEdges& delaunay) {
+    if (segment_neighbours_.empty()) {
+      segment_neighbours_.resize(points_.size() / 3);
+      for (const uint64_t key : groups_.segments) link_segment(key, true);
+    }
+    segment_neighbours_.resize(points_.size() / 3);  // points inside facets have no segment
+    std::vector<uint64_t> candidates;
+    for (const uint32_t v : delaunay.changed_points())
+      for (const uint32_t w : segment_neighbours_[v])
+        if (delaunay.may_have_changed(v, w)) candidates.push_back(edge_key(v, w));
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::vector<uint64_t> split;
+    for (const uint64_t key : candidates)
+      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) split.push_back(key);
+    return split;
+  }
+
+  // Segments are added and removed here, so that segment_neighbours_, once built, follows.
+  void add_segment(uint64_t key) {
+    if (groups_.segments.insert(key).second) link_segment(key, true);
+  }
+  void remove_segment(uint64_t key) {
+    if (groups_.segments.erase(key)) link_segment(key, false);
+  }
+  void link_segment(uint64_t key, bool add) {
+    if (segment_neighbours_.empty()) return;
+    const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+    if (segment_neighbours_.size() < points_.size() / 3) segment_neighbours_.resize(points_.size() / 3);
+    for (const auto& [v, w] : {std::pair{a, b}, std::pair{b, a}}) {
+      auto& list = segment_neighbours_[v];
+      if (add) list.push_back(w);
+      else list.erase(std::find(list.begin(), list.end(), w));
+    }
   }
 
   // A rounded Steiner point lies a few ulps off its segment, so the triangles of one facet that meet
@@ -206,7 +263,7 @@ class Refiner {
   // inside the facet): the way out when no fold got a point inside its facet.
   std::vector<uint64_t> make_segments(const std::vector<uint64_t>& folds) {
     for (uint64_t key : folds) {
-      groups_.segments.insert(key);
+      add_segment(key);
       fold_segments_.insert(key);
     }
     return folds;
@@ -269,9 +326,9 @@ class Refiner {
     parameter_.push_back(along_segment ? t : 0.0);
     r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
     r_.made_from.push_back(ends);
-    groups_.segments.erase(key);
-    groups_.segments.insert(edge_key(a, m));
-    groups_.segments.insert(edge_key(m, b));
+    remove_segment(key);
+    add_segment(edge_key(a, m));
+    add_segment(edge_key(m, b));
     if (fold) {  // its halves are folds too
       fold_segments_.erase(key);
       fold_segments_.insert(edge_key(a, m));
@@ -341,6 +398,7 @@ class Refiner {
   std::vector<double> parameter_;  // per Steiner point: its t along on_segment_ (sweepcdt/steiner_point.h)
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
+  std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
 };

@@ -14,7 +14,11 @@
 //      existing one takes another t: steiner_point.h) (the concentric-shell
 //      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
 //      about it, so segments at a small angle do not split each other without end);
-//   3. the triangles holding a split segment are split at the new point (facet-interior edges are
+//      — and again, pass after pass, every segment that the last pass's new points made not
+//      Delaunay, looked for only near the points the pass changed (DelaunayEdges::changed_points):
+//      on a band of a tessellated sphere nested in another, each split makes the next diagonal not
+//      Delaunay, some 260 passes in a row on hollow_sphere_fine;
+//   3. the triangles holding a split segment are split at the new points (facet-interior edges are
 //      not segments: they need not be Delaunay).
 // When every segment is Delaunay, each facet is flipped to its own 2D CDT (facet_flips.h). Folds:
 // a split point is computed in floating point (sweepcdt/steiner_point.h), so it lies on its segment

@@ -5,7 +5,7 @@ about: long thin triangles fanned across planar faces, cylinders and fillets wit
 close to 180 degrees, oblique planes whose rounded coordinates are not exactly flat.
 
 Run with Debian's FreeCAD (freecad-python3), from the repository root:
-    /usr/bin/python3 tests/data/cad/make_cad_parts.py tests/data/cad
+    /usr/bin/python3 tests/data/cad/make_cad_parts.py tests/data/cad [PART ...]
 The outputs are committed, so the tests do not need FreeCAD; rerunning gives the same files for the
 same FreeCAD/OCC version (0.20.2 / 7.6.3 when they were made).
 """
@@ -114,6 +114,13 @@ def box_fused_sphere():
     return Part.makeBox(10, 10, 10).fuse(Part.makeSphere(4, V(10, 10, 10))).removeSplitter()
 
 
+def hollow_sphere():
+    # Two concentric spheres tessellated alike: each band of the inner one is nearly cospherical with
+    # the outer one's, and at fine deflection Steiner refinement walks those bands one split after
+    # another, for more than 200 passes (the round limit refused it until session 14).
+    return Part.makeSphere(20).cut(Part.makeSphere(17))
+
+
 PARTS = {
     "plate_with_holes": plate_with_holes,
     "flange": flange,
@@ -125,23 +132,27 @@ PARTS = {
     "hex_nut": hex_nut,
     "two_bodies": two_bodies,
     "box_fused_sphere": box_fused_sphere,
+    "hollow_sphere": hollow_sphere,
 }
 OBJ_TOO = {"rotated_box", "bracket"}  # text output: 6 decimals, so even more rounding
+PLY_ONLY = {"hollow_sphere"}  # binary PLY (FreeCAD's float32 coordinates, indexed): 0.38x the STL's size
 
 
-def main(out_dir):
+def main(out_dir, names):
     os.makedirs(out_dir, exist_ok=True)
-    for name, make in PARTS.items():
-        shape = make()
+    for name in names or PARTS:
+        shape = PARTS[name]()
         for label, (linear, angular) in DEFLECTIONS.items():
             mesh = MeshPart.meshFromShape(Shape=shape, LinearDeflection=linear, AngularDeflection=angular, Relative=False)
             ok = mesh.isSolid() and not mesh.hasNonManifolds() and not mesh.hasSelfIntersections()
             stem = os.path.join(out_dir, f"{name}_{label}")
-            mesh.write(stem + ".stl")
+            mesh.write(stem + (".ply" if name in PLY_ONLY else ".stl"))
             if name in OBJ_TOO:
                 mesh.write(stem + ".obj")
             print(f"{name}_{label}: {mesh.CountFacets} triangles, closed solid: {ok}")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__)))
+    # Optional part names after the folder: make only those (the others' files stay as they are).
+    main(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__)), sys.argv[2:])
+
