@@ -80,10 +80,11 @@ class Refiner {
 
   // Rounds: split every segment that is not Delaunay, then (pass after pass) those the new points
   // made not Delaunay, looking only near the points each pass changed; then give each facet its 2D
-  // CDT and deal with the folds. The passes matter on strips of long thin triangles (where a hole
-  // meets a curved face): each split there makes the next diagonal not Delaunay, one per pass, a few
-  // hundred in a row, and a pass over the whole surface each time would cost the strip's length
-  // times the surface.
+  // CDT and deal with the folds. The passes matter on bands of nearly cospherical triangles (a
+  // sphere tessellated like the one around it): each split there makes the next diagonal not
+  // Delaunay, one per pass, a few hundred in a row. A pass splits the triangles as a round did (in
+  // the same order, so the facets' flips start from the same fans: splitting once per round instead
+  // tripled gearwheel's flips), but it neither scans every segment nor flips the facets.
   void split_until_delaunay() {
     DelaunayEdges delaunay(points_);  // kept up to date as points are added
     for (;; ++r_.rounds) {
@@ -91,11 +92,12 @@ class Refiner {
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
         check_limits(split, 0);
+        new_point.clear();
         for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
+        split_triangles(new_point);
         delaunay.insert_new_points();
         report_progress();
       }
-      if (!new_point.empty()) split_triangles(new_point);
       // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
       // rounding left in it when they are not Delaunay either (see folds_not_in).
       flip_facets();
