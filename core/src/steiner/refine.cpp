@@ -363,11 +363,22 @@ class Refiner {
   }
 
   // Every triangle split along each of its split edges in turn, keeping its orientation and facet.
+  // A pass splits a few segments of a large surface: only a triangle with two ends of split edges
+  // among its vertices is looked up (a flag per point), the others are copied as they are.
   void split_triangles(const std::unordered_map<uint64_t, uint32_t>& new_point) {
+    std::vector<char> split_end(points_.size() / 3, 0);
+    for (const auto& [key, m] : new_point) split_end[key >> 32] = split_end[static_cast<uint32_t>(key)] = 1;
     std::vector<Triangle> tris;
     std::vector<uint32_t> original;
+    tris.reserve(tris_.size() + 2 * new_point.size());
+    original.reserve(tris.capacity());
     std::vector<Triangle> work;
     for (std::size_t j = 0; j < tris_.size(); ++j) {
+      if (split_end[tris_[j][0]] + split_end[tris_[j][1]] + split_end[tris_[j][2]] < 2) {
+        tris.push_back(tris_[j]);
+        original.push_back(original_[j]);
+        continue;
+      }
       work.assign(1, tris_[j]);
       for (std::size_t w = 0; w < work.size(); ++w)
         for (int i = 0; i < 3; ++i) {
