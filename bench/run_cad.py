@@ -10,7 +10,7 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj, *.ply and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
@@ -171,6 +171,7 @@ def main():
     ap.add_argument("--repeat", type=int)
     ap.add_argument("--noise", action="store_true", help="CAD parts with rounding noise (NOISY)")
     ap.add_argument("--rotated", action="store_true", help="CAD parts turned by 23 degrees (ROTATED)")
+    ap.add_argument("--more", action="store_true", help="more FreeCAD parts (bench/make_more_cad_parts.py)")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -195,6 +196,10 @@ def main():
             path = os.path.join(noisy_dir.name, name.replace(".stl", "_rotated.stl"))
             rotated_stl(os.path.join(ROOT, "tests", "data", "cad", name), path)
             files.append(path)
+    if args.more:
+        subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "bench", "make_more_cad_parts.py"), noisy_dir.name],
+                       check=True, capture_output=True)
+        files = sorted(glob.glob(os.path.join(noisy_dir.name, "*.stl")))
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return

@@ -1,0 +1,151 @@
+"""More CAD parts for bench/run_cad.py --more (issue 13): solids the committed parts of tests/data/cad
+do not cover, modelled with FreeCAD's Part workbench and exported as a FreeCAD user exports them
+(MeshPart, the same "standard" and "fine" deflections as tests/data/cad/make_cad_parts.py), binary
+STL. Session 14 found two parts here that failed by default (sphere_with_holes_fine: the round
+limit; the hollow sphere is committed as tests/data/cad/hollow_sphere_*.ply). Not committed (about
+20 MB); made in a few seconds whenever the bench runs.
+
+Run with Debian's FreeCAD (freecad-python3):
+    /usr/bin/python3 bench/make_more_cad_parts.py OUT_DIR
+"""
+import math
+import os
+import sys
+
+sys.path.append("/usr/lib/freecad-python3/lib")
+import FreeCAD  # noqa: E402
+import MeshPart  # noqa: E402
+import Part  # noqa: E402
+
+V = FreeCAD.Vector
+DEFLECTIONS = {"std": (0.1, math.radians(28.5)), "fine": (0.01, math.radians(10))}
+TILT = (V(0.3, 0.5, 0.8), 23)  # as run_cad.py --rotated: a part placed at an angle in an assembly
+
+
+def sheet():  # 1.5 mm sheet metal with 32 holes: long thin fans on two large parallel faces
+    p = Part.makeBox(200, 100, 1.5)
+    for i in range(8):
+        for j in range(4):
+            p = p.cut(Part.makeCylinder(2 + (i * j) % 3, 5, V(12 + 25 * i, 12 + 25 * j, -1)))
+    return p
+
+
+def shaft():  # turned: cones, a groove, a keyway, a cross hole
+    profile = Part.Face(Part.makePolygon([V(0, 0, 0), V(10, 0, 0), V(10, 0, 10), V(8, 0, 12), V(8, 0, 40), V(6.5, 0, 41),
+                                          V(6.5, 0, 43), V(8, 0, 44), V(8, 0, 70), V(12, 0, 74), V(12, 0, 90), V(0, 0, 90),
+                                          V(0, 0, 0)]))
+    s = profile.revolve(V(0, 0, 0), V(0, 0, 1), 360)
+    s = s.cut(Part.makeBox(20, 3, 20, V(-10, 6.5, 50)))
+    return s.cut(Part.makeCylinder(2, 30, V(-15, 0, 80), V(1, 0, 0)))
+
+
+def sphere_with_holes():  # a hollow sphere drilled along four axes
+    s = Part.makeSphere(20).cut(Part.makeSphere(17))
+    for d in (V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 1, 1)):
+        s = s.cut(Part.makeCylinder(4, 60, d * (-30 / d.Length), d))
+    return s
+
+
+def chamfered_block():  # 45-degree chamfers everywhere: oblique planes, not flat in floats
+    b = Part.makeBox(40, 40, 20)
+    b = b.makeChamfer(2, b.Edges)
+    b = b.cut(Part.makeCylinder(6, 30, V(20, 20, -5)))
+    return b.cut(Part.makeCone(10, 6, 8, V(20, 20, 12)))
+
+
+def ring_torus():  # a torus fused with a box
+    return Part.makeTorus(30, 5).fuse(Part.makeBox(10, 10, 14, V(25, -5, -7))).removeSplitter()
+
+
+def loft():  # a smooth lofted body (B-spline faces)
+    wires = [Part.Wire(Part.makeCircle(10 + 4 * math.sin(k), V(2 * k, 0, z))) for k, z in enumerate([0, 10, 25, 40])]
+    return Part.makeLoft(wires, True)
+
+
+def offset_plate():  # far from the origin: coordinates of 1234.5 beside 4 mm features
+    p = Part.makeBox(50, 30, 4)
+    for i in range(3):
+        p = p.cut(Part.makeCylinder(3, 10, V(10 + 15 * i, 15, -2)))
+    p.translate(V(1234.5, -876.25, 350.0))
+    return p
+
+
+def bolt():
+    head = Part.Face(Part.makePolygon([V(8 * math.cos(math.pi / 3 * k), 8 * math.sin(math.pi / 3 * k), 0) for k in range(7)]))
+    b = head.extrude(V(0, 0, 5)).fuse(Part.makeCylinder(4, 30, V(0, 0, 5))).removeSplitter()
+    tip = [e for e in b.Edges if isinstance(e.Curve, Part.Circle) and abs(e.Vertexes[0].Point.z - 35) < 1e-6]
+    return b.makeChamfer(0.8, tip) if tip else b
+
+
+def elbow():  # a quarter of a pipe bent round: two concentric tori
+    return Part.makeTorus(40, 10, V(0, 0, 0), V(0, 0, 1), 0, 360, 90).cut(Part.makeTorus(40, 8, V(0, 0, 0), V(0, 0, 1), 0, 360, 90))
+
+
+def bearing_ring():  # concentric cylinders and a torus groove
+    r = Part.Face(Part.makePolygon([V(20, 0, -5), V(30, 0, -5), V(30, 0, 5), V(20, 0, 5), V(20, 0, -5)])).revolve(V(0, 0, 0), V(0, 0, 1), 360)
+    return r.cut(Part.makeTorus(30, 3))
+
+
+def frustum():  # a cone frustum drilled through its side
+    c = Part.makeCone(30, 15, 25)
+    for k in range(6):
+        a = 2 * math.pi * k / 6
+        c = c.cut(Part.makeCylinder(2, 40, V(20 * math.cos(a), 20 * math.sin(a), -5)))
+    return c
+
+
+def boss_plate():  # bosses fused onto a plate, drilled
+    p = Part.makeBox(100, 60, 5)
+    for i in range(4):
+        p = p.fuse(Part.makeCylinder(4, 10, V(15 + 23 * i, 30, 5)))
+    p = p.removeSplitter()
+    for i in range(4):
+        p = p.cut(Part.makeCylinder(2, 30, V(15 + 23 * i, 30, -5)))
+    return p
+
+
+def knob():
+    profile = Part.Face(Part.makePolygon([V(0, 0, 0), V(15, 0, 0), V(15, 0, 8), V(10, 0, 14), V(5, 0, 14), V(5, 0, 20),
+                                          V(0, 0, 20), V(0, 0, 0)]))
+    return profile.revolve(V(0, 0, 0), V(0, 0, 1), 360)
+
+
+def cube_void():  # a cube with a spherical void: a nested shell
+    return Part.makeBox(30, 30, 30).cut(Part.makeSphere(8, V(15, 15, 15)))
+
+
+def enclosure():  # a shelled box with rounded vertical edges
+    b = Part.makeBox(80, 50, 30)
+    b = b.makeFillet(5, [e for e in b.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[-1].Point.z) > 1])
+    return b.makeThickness([f for f in b.Faces if abs(f.CenterOfMass.z - 30) < 1e-6], -2, 1e-3)
+
+
+def tiny_fillet():  # 0.2 mm fillets on a 200 mm block
+    b = Part.makeBox(200, 100, 20)
+    return b.makeFillet(0.2, b.Edges)
+
+
+PARTS = {"sheet": sheet, "shaft": shaft, "sphere_with_holes": sphere_with_holes, "chamfered_block": chamfered_block,
+         "ring_torus": ring_torus, "loft": loft, "offset_plate": offset_plate, "bolt": bolt, "elbow": elbow,
+         "bearing_ring": bearing_ring, "frustum": frustum, "boss_plate": boss_plate, "knob": knob,
+         "cube_void": cube_void, "enclosure": enclosure, "tiny_fillet": tiny_fillet}
+TILTED = {"sheet", "bolt", "frustum", "boss_plate"}  # also placed at an angle (standard deflection)
+
+
+def main(out_dir):
+    os.makedirs(out_dir, exist_ok=True)
+    for name, make in PARTS.items():
+        shape = make()
+        variants = [(label, shape, d) for label, d in DEFLECTIONS.items()]
+        if name in TILTED:
+            tilted = shape.copy()
+            tilted.rotate(V(0, 0, 0), *TILT)
+            variants.append(("std_tilted", tilted, DEFLECTIONS["std"]))
+        for label, s, (linear, angular) in variants:
+            mesh = MeshPart.meshFromShape(Shape=s, LinearDeflection=linear, AngularDeflection=angular, Relative=False)
+            mesh.write(os.path.join(out_dir, f"{name}_{label}.stl"))
+            print(f"{name}_{label}: {mesh.CountFacets} triangles, closed solid: {mesh.isSolid()}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
