@@ -38,6 +38,7 @@ class Refiner {
     points_ = input.points;
     on_segment_.assign(input.num_points(), {kNone, kNone});
     tris_ = groups_.triangles;
+    unflipped_.assign(tris_.size(), 1);
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
     for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
   }
@@ -101,8 +102,7 @@ class Refiner {
       // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
       // rounding left in it when they are not Delaunay either (see folds_not_in).
       flip_facets();
-      r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
-                                         [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
+      flip_folds(delaunay);
       const std::vector<uint64_t> folds = folds_not_in(delaunay);
       if (folds.empty()) {
         r_.delaunay = delaunay.mesh();
@@ -294,7 +294,33 @@ class Refiner {
     return {std::bit_cast<uint64_t>(x[0]), std::bit_cast<uint64_t>(x[1]), std::bit_cast<uint64_t>(x[2])};
   }
 
-  void flip_facets() { r_.flips += flip_facets_to_cdt({points_, tris_, groups_.segments, on_segment_}); }
+  // Each facet to its 2D CDT — only the facets with a triangle changed since their last flips (split,
+  // or flipped across a fold): flipping the others again would find nothing to flip, since Lawson's
+  // flips stop only when no edge of the facet flips. On a large surface most facets are untouched
+  // in a round, and building the flips' edge map and testing every edge was a quarter of refinement.
+  void flip_facets() {
+    std::vector<char> changed(groups_.num_facets(), 0);
+    for (std::size_t t = 0; t < tris_.size(); ++t)
+      if (unflipped_[t]) changed[groups_.facet[original_[t]]] = 1;
+    std::vector<uint32_t> ids;
+    for (uint32_t t = 0; t < tris_.size(); ++t)
+      if (changed[groups_.facet[original_[t]]]) ids.push_back(t);
+    std::vector<Triangle> some(ids.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) some[k] = tris_[ids[k]];
+    r_.flips += flip_facets_to_cdt({points_, some, groups_.segments, on_segment_});
+    for (std::size_t k = 0; k < ids.size(); ++k) tris_[ids[k]] = some[k];
+    std::fill(unflipped_.begin(), unflipped_.end(), 0);
+  }
+
+  // The folds that are not Delaunay flipped to a Delaunay diagonal where one is (facet_flips.h); the
+  // triangles it changes are flipped to their facet's CDT again next round, as before.
+  void flip_folds(DelaunayEdges& delaunay) {
+    const std::vector<Triangle> before = tris_;
+    r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
+                                       [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
+    for (std::size_t t = 0; t < tris_.size(); ++t)
+      if (tris_[t] != before[t]) unflipped_[t] = 1;
+  }
 
   // The concentric-shell rule (refine.h, sweepcdt/steiner_point.h): returns the new point's id. A
   // point is made from its input segment's ends at its parameter along the segment when their
@@ -370,13 +396,16 @@ class Refiner {
     for (const auto& [key, m] : new_point) split_end[key >> 32] = split_end[static_cast<uint32_t>(key)] = 1;
     std::vector<Triangle> tris;
     std::vector<uint32_t> original;
+    std::vector<char> unflipped;
     tris.reserve(tris_.size() + 2 * new_point.size());
     original.reserve(tris.capacity());
+    unflipped.reserve(tris.capacity());
     std::vector<Triangle> work;
     for (std::size_t j = 0; j < tris_.size(); ++j) {
       if (split_end[tris_[j][0]] + split_end[tris_[j][1]] + split_end[tris_[j][2]] < 2) {
         tris.push_back(tris_[j]);
         original.push_back(original_[j]);
+        unflipped.push_back(unflipped_[j]);
         continue;
       }
       work.assign(1, tris_[j]);
@@ -397,10 +426,12 @@ class Refiner {
       for (const Triangle& t : work) {
         tris.push_back(t);
         original.push_back(original_[j]);
+        unflipped.push_back(work.size() > 1 || unflipped_[j]);
       }
     }
     tris_.swap(tris);
     original_.swap(original);
+    unflipped_.swap(unflipped);
   }
 
   const Options& options_;
@@ -411,6 +442,7 @@ class Refiner {
   std::vector<double> parameter_;  // per Steiner point: its t along on_segment_ (sweepcdt/steiner_point.h)
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
+  std::vector<char> unflipped_;      // per triangle: new, or changed, since the facets' last flips
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
