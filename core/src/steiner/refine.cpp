@@ -296,8 +296,9 @@ class Refiner {
 
   // Each facet to its 2D CDT — only the facets with a triangle changed since their last flips (split,
   // or flipped across a fold): flipping the others again would find nothing to flip, since Lawson's
-  // flips stop only when no edge of the facet flips. On a large surface most facets are untouched
-  // in a round, and building the flips' edge map and testing every edge was a quarter of refinement.
+  // flips stop only when no edge of the facet flips (or at facet_flips.cpp's bound, which no input
+  // reaches). On a large surface most facets are untouched in a round; building the flips' edge map
+  // and testing every edge again cost gearwheel 0.86 G of its 21.07 G instructions.
   void flip_facets() {
     std::vector<char> changed(groups_.num_facets(), 0);
     for (std::size_t t = 0; t < tris_.size(); ++t)
