@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -103,7 +104,7 @@ class Refiner {
       // rounding left in it when they are not Delaunay either (see folds_not_in).
       flip_facets();
       flip_folds(delaunay);
-      const std::vector<uint64_t> folds = folds_not_in(delaunay);
+      const std::vector<Fold> folds = folds_not_in(delaunay);
       if (folds.empty()) {
         r_.delaunay = delaunay.mesh();
         return;
@@ -193,10 +194,15 @@ class Refiner {
   // at an edge from it are not exactly coplanar: the edge is a fold, a ridge of the refined PLC like
   // any segment. The CDT theorem needs it strongly Delaunay too; a fold that is not would leave the
   // refined PLC without a CDT (thingi_1706459.stl: 20 of 11787 folds). Returns those folds, each
-  // once, in triangle order.
-  std::vector<uint64_t> folds_not_in(DelaunayEdges& delaunay) const {
+  // once, in triangle order, with the triangles on their sides (split_folds_inside_facets needs them,
+  // and building the map of every edge of a large surface again cost as much as finding the folds).
+  struct Fold {
+    uint64_t key;
+    std::array<uint32_t, 2> sides;
+  };
+  std::vector<Fold> folds_not_in(DelaunayEdges& delaunay) const {
     const EdgeSides sides = interior_edge_sides(tris_, groups_.segments);  // facet-interior edge -> its two triangles
-    std::vector<uint64_t> folds;
+    std::vector<Fold> folds;
     for (uint32_t j = 0; j < tris_.size(); ++j)
       for (int i = 0; i < 3; ++i) {
         const uint64_t key = edge_key(tris_[j][i], tris_[j][(i + 1) % 3]);
@@ -204,7 +210,7 @@ class Refiner {
         if (it == sides.end() || it->second[0] != j || it->second[1] == kNone || delaunay.has_edge(tris_[j][i], tris_[j][(i + 1) % 3])) continue;
         const uint32_t apex = third_vertex(tris_[it->second[1]], key);
         if (predicates::orient<3>({p(tris_[j][0]), p(tris_[j][1]), p(tris_[j][2]), p(apex)}) == Sign::Zero) continue;
-        folds.push_back(key);
+        folds.push_back({key, it->second});
       }
     return folds;
   }
@@ -216,16 +222,15 @@ class Refiner {
   // uniformly, quadratically many points. So the longest folds go first, and a midpoint closer
   // to a point placed this round than half its fold's length waits for the next round (graded, as
   // Delaunay refinement grades). Returns the number of points placed.
-  std::size_t split_folds_inside_facets(const std::vector<uint64_t>& folds, std::vector<uint64_t>& encroached) {
-    const EdgeSides sides = interior_edge_sides(tris_, groups_.segments);
-    std::vector<std::pair<double, uint64_t>> by_length;
-    for (uint64_t key : folds) by_length.emplace_back(-squared_length(key), key);
+  std::size_t split_folds_inside_facets(const std::vector<Fold>& folds, std::vector<uint64_t>& encroached) {
+    std::vector<std::tuple<double, uint64_t, std::array<uint32_t, 2>>> by_length;  // keys are distinct: the sides never decide
+    for (const Fold& f : folds) by_length.emplace_back(-squared_length(f.key), f.key, f.sides);
     std::sort(by_length.begin(), by_length.end());
     std::vector<char> touched(tris_.size(), 0);
     SpacingGrid grid;
     std::unordered_map<uint64_t, uint32_t> new_point;  // fold -> its point
-    for (const auto& [minus_length2, key] : by_length) {
-      const auto& [t1, t2] = sides.at(key);
+    for (const auto& [minus_length2, key, sides] : by_length) {
+      const auto [t1, t2] = sides;
       if (touched[t1] || touched[t2]) continue;
       const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
       double x[3];
@@ -263,12 +268,14 @@ class Refiner {
 
   // The folds become segments (no longer flipped, split like any other segment, their split points
   // inside the facet): the way out when no fold got a point inside its facet.
-  std::vector<uint64_t> make_segments(const std::vector<uint64_t>& folds) {
-    for (uint64_t key : folds) {
-      add_segment(key);
-      fold_segments_.insert(key);
+  std::vector<uint64_t> make_segments(const std::vector<Fold>& folds) {
+    std::vector<uint64_t> keys;
+    for (const Fold& f : folds) {
+      add_segment(f.key);
+      fold_segments_.insert(f.key);
+      keys.push_back(f.key);
     }
-    return folds;
+    return keys;
   }
 
   bool in_diametral_ball(uint64_t key, const double* x) const {
