@@ -13,12 +13,13 @@ import os
 import sys
 
 sys.path.append("/usr/lib/freecad-python3/lib")
+sys.path.append(os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tests", "data", "cad"))
 import FreeCAD  # noqa: E402
 import MeshPart  # noqa: E402
 import Part  # noqa: E402
+from make_cad_parts import DEFLECTIONS  # noqa: E402  the committed parts' "standard" and "fine"
 
 V = FreeCAD.Vector
-DEFLECTIONS = {"std": (0.1, math.radians(28.5)), "fine": (0.01, math.radians(10))}
 TILT = (V(0.3, 0.5, 0.8), 23)  # as run_cad.py --rotated: a part placed at an angle in an assembly
 
 

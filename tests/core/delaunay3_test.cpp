@@ -291,7 +291,7 @@ void expect_incremental_edges(const std::vector<double>& all, const std::string&
     const std::vector<uint32_t>& listed = incremental.changed_points();
     const std::set<uint32_t> changed(listed.begin(), listed.end());
     ASSERT_EQ(changed.size(), listed.size()) << what << ": a point listed twice";
-    for (uint32_t v = static_cast<uint32_t>(points.size() / 3 - (end - before_end)); v < end; ++v)
+    for (auto v = static_cast<uint32_t>(before_end); v < end; ++v)
       ASSERT_TRUE(changed.count(v)) << what << ": new point " << v << " not listed";
     if (changed.size() < end) ++partial;
     for (uint32_t a = 0; a < end; ++a)

@@ -12,6 +12,7 @@
 #include "steiner/facet_flips.h"
 #include "steiner/facet_groups.h"
 #include "sweepcdt/cdt.h"
+#include "sweepcdt/predicates/orientation.h"
 
 using namespace sweepcdt;
 
@@ -79,10 +80,7 @@ std::set<Triangle> cdt_2d(const FannedFacet& facet) {
   std::vector<Triangle> triangles;
   for (std::size_t j = 0; j < t.num_simplices(); ++j) {
     const uint32_t* s = t.simplex(j);
-    const double* p = t.point(s[0]);
-    const double* q = t.point(s[1]);
-    const double* r = t.point(s[2]);
-    const bool ccw = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0;
+    const bool ccw = predicates::orient<2>({t.point(s[0]), t.point(s[1]), t.point(s[2])}) == predicates::Sign::Positive;
     triangles.push_back(ccw ? Triangle{s[0], s[1], s[2]} : Triangle{s[0], s[2], s[1]});
   }
   return canonical(triangles);

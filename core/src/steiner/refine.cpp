@@ -24,8 +24,9 @@ using predicates::Sign;
 
 // Limits that keep a hostile input from running away (the concentric-shell rule terminates, but the
 // number of points it needs grows with the ratio of the longest segment to the smallest gap). The
-// budget bounds the passes of a round (each adds a point and costs what it changes); the rounds,
-// each a pass over the whole surface and its facets, have a limit of their own.
+// budget bounds the passes of a round (each adds a point; it looks up only the segments and
+// triangles near its changes, though it still copies the triangle list); the rounds, each a scan of
+// the whole surface and a flip of its changed facets, have a limit of their own.
 constexpr uint64_t kMaxRounds = 200;
 std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points + 100000; }
 
@@ -136,9 +137,10 @@ class Refiner {
                      split.empty() ? std::vector<uint32_t>{} : std::vector<uint32_t>{static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
   }
 
-  // Segments that are not Delaunay, each once, in triangle order (deterministic). A segment checked
-  // in an earlier round and still there was Delaunay then (the others were split), so only new
-  // segments and those whose ends the new points' cavities touched need checking again.
+  // Segments that are not Delaunay, each once, in triangle order (deterministic): a round's first
+  // pass (the later ones: changed_segments_not_in). A segment checked in an earlier round and still
+  // there was Delaunay then (the others were split), so only new segments and those whose ends the
+  // new points' cavities touched need checking again.
   std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) const {
     std::vector<uint64_t> split;
     std::unordered_set<uint64_t> marked;
