@@ -56,7 +56,7 @@ struct FannedFacet {
   }
 
   void add(std::array<double, 2> xy, std::array<uint32_t, 2> segment) {
-    points.insert(points.end(), {xy[0], xy[1], 0.0});
+    for (const double x : {xy[0], xy[1], 0.0}) points.push_back(x);  // (insert of a list: GCC 12's false -Wstringop-overflow)
     on_segment.push_back(segment);
   }
 };
