@@ -63,7 +63,12 @@ class Sweep {
   Sweep(const Plc<D>& plc, const Frame& frame, const std::optional<std::array<uint32_t, D + 1>>& delta,
         const Options& options, CdtStatistics& stats, bool open = false, std::optional<NoCdtError>* failure = nullptr)
       : plc_(plc), frame_(frame), delta_(delta), options_(options), stats_(stats), open_(open), failure_(failure),
-        drop_next_(plc.num_points(), kNone), reached_(plc.num_points(), 0), queue_(ItemOrder{this}) {}
+        // About two faces and three ridges per constraint (a star's link and the faces inside it),
+        // so that the sweeps of small cavities do not grow their tables step by step.
+        face_of_(2 * plc.num_simplices()), ridge_anchor_(3 * plc.num_simplices()),
+        drop_next_(plc.num_points(), kNone), reached_(plc.num_points(), 0), queue_(ItemOrder{this}) {
+    faces_.reserve(2 * plc.num_simplices());
+  }
 
   Triangulation<D> run() {
     add_constraint_faces();
@@ -81,6 +86,16 @@ class Sweep {
   }
 
  private:
+  // At most D + 1 faces of one simplex, without allocating (build() runs once per simplex: in the
+  // star sweeps of vertex deletion, three vectors a simplex were a tenth of the sweep's time).
+  struct FaceList {
+    std::array<uint32_t, D + 1> ids;
+    int size = 0;
+    void push_back(uint32_t f) { ids[size++] = f; }
+    const uint32_t* begin() const { return ids.data(); }
+    const uint32_t* end() const { return ids.data() + size; }
+  };
+
   // A potential simplex: face f with face g (a pair at a reflex ridge) or with vertex g.
   struct Item {
     std::array<uint32_t, D + 1> s;  // its vertices, positively oriented
@@ -130,6 +145,18 @@ class Sweep {
     c[D] = point(p);
     const int o = predicates::to_int(predicates::orient<D>(c));
     return o == 0 ? Side::On : (o == front ? Side::Front : Side::Behind);
+  }
+  // Whether g's apex (its vertex off their shared ridge) is in front of f, and f's apex in front of g.
+  bool in_front_of_each_other(const Face<D>& f, const Face<D>& g, uint32_t apex_f, uint32_t apex_g) const {
+    predicates::Coords<D + 1> c;
+    std::array<uint32_t, D + 1> f_then_g, g_then_f;
+    for (int i = 0; i < D; ++i) c[i] = point(f.v[i]), f_then_g[i] = f.v[i], g_then_f[i] = g.v[i];
+    c[D] = point(apex_g);
+    f_then_g[D] = apex_g;
+    g_then_f[D] = apex_f;
+    const int o = predicates::to_int(predicates::orient<D>(c));  // orient(f sorted, g's apex)
+    // orient(g sorted, f's apex) permutes the same points: the sign of the permutation between them.
+    return o != 0 && o == f.front && o * sort_parity(f_then_g) * sort_parity(g_then_f) == g.front;
   }
   predicates::Vertices<D + 1> vertices(const std::array<uint32_t, D + 1>& s) const {
     predicates::Vertices<D + 1> v;
@@ -343,8 +370,9 @@ class Sweep {
       if (g == f || faces_[g].built_front) continue;
       const RidgeKey<D> ridge = ridge_of<D>(face.v, i);
       const uint32_t apex_g = apex_on(g, ridge);
-      // Reflex ridge: each face in front of the other.
-      if (side(face, apex_g) != Side::Front || side(faces_[g], face.v[i]) != Side::Front) continue;
+      // Reflex ridge: each face in front of the other. Both sides are orientations of the same D + 1
+      // points (the ridge, f's apex and g's), in two orders: one exact orientation answers both.
+      if (!in_front_of_each_other(face, faces_[g], face.v[i], apex_g)) continue;
       consider({simplex_on_front(face, apex_g), f, g, face.version, true, {}});
     }
     if (face.drop != kNone) consider({simplex_on_front(face, drop_candidate(f)), f, kNone, face.version, false, {}});
@@ -399,7 +427,7 @@ class Sweep {
     simplices_.insert(simplices_.end(), s.begin(), s.end());
     for (uint32_t v : s)
       if (!reached_[v]) reached_[v] = 1, ++reached_count_;
-    std::vector<uint32_t> finished, fresh, behind;  // faces s finishes, creates, lies behind
+    FaceList finished, fresh, behind;  // faces s finishes, creates, lies behind
     for (int i = 0; i <= D; ++i) {
       const FaceKey<D> key = facet_opposite<D>(s, i);
       const uint32_t found = face_of_.find(key);
@@ -434,9 +462,8 @@ class Sweep {
   // face of s the ray enters s through. A ray crosses faces from front to behind only, so that is a
   // face s lies behind — normally a new one ("find v's new drop face among F_new"); a preexisting
   // one gets a new candidate.
-  void redistribute(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& finished,
-                    const std::vector<uint32_t>& behind, const std::vector<uint32_t>& fresh) {
-    std::vector<uint32_t> touched;
+  void redistribute(const std::array<uint32_t, D + 1>& s, const FaceList& finished, const FaceList& behind, const FaceList& fresh) {
+    FaceList touched;
     for (uint32_t f : finished) {
       uint32_t v = faces_[f].drop;
       faces_[f].drop = kNone;
@@ -462,7 +489,7 @@ class Sweep {
 
   // The face among `candidates` (faces of s that s lies behind) through which the ray from v enters
   // s: one that v sees from outside s (one orientation each); the ray test decides among several.
-  uint32_t entry_face(const std::array<uint32_t, D + 1>& s, const std::vector<uint32_t>& candidates, uint32_t v) const {
+  uint32_t entry_face(const std::array<uint32_t, D + 1>& s, const FaceList& candidates, uint32_t v) const {
     uint32_t seen[D + 1];
     int count = 0;
     for (uint32_t h : candidates) {
