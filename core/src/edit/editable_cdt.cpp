@@ -144,13 +144,21 @@ struct EditableCdt<D>::Impl {
   // --- the star of v -----------------------------------------------------------------------------
   std::vector<uint32_t> star_of(uint32_t v) const {
     std::vector<uint32_t> star{simplex_at[v]};
-    std::unordered_set<uint32_t> seen{simplex_at[v]};
+    // Stars are small (20 simplices on CAD parts): looking through them beats a hash set, which
+    // allocated a node for each; a large star gets the set.
+    constexpr std::size_t kScanned = 64;
+    std::unordered_set<uint32_t> seen;
+    const auto fresh = [&](uint32_t t) {
+      if (star.size() < kScanned) return std::find(star.begin(), star.end(), t) == star.end();
+      if (seen.empty()) seen.insert(star.begin(), star.end());
+      return seen.insert(t).second;
+    };
     for (std::size_t k = 0; k < star.size(); ++k) {
       const uint32_t t = star[k];
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
         if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
-        if (seen.insert(across / (D + 1)).second) star.push_back(across / (D + 1));
+        if (fresh(across / (D + 1))) star.push_back(across / (D + 1));
       }
     }
     return star;
@@ -267,14 +275,20 @@ struct EditableCdt<D>::Impl {
         if (simplex(t)[i] != v) ids.push_back(simplex(t)[i]);
     std::sort(ids.begin(), ids.end(), [&](uint32_t a, uint32_t b) { return order(a) < order(b); });
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    std::unordered_map<uint32_t, uint32_t> local;
+    std::vector<std::pair<uint32_t, uint32_t>> local;  // (global id, cavity id), sorted
     Plc<D> cavity;
+    cavity.points.reserve(ids.size() * D);
     for (uint32_t x : ids) {
-      local[x] = static_cast<uint32_t>(cavity.num_points());
+      local.push_back({x, static_cast<uint32_t>(cavity.num_points())});
       cavity.points.insert(cavity.points.end(), point(x), point(x) + D);
     }
+    std::sort(local.begin(), local.end());
     const auto add = [&](const Key& global, ExteriorSide side) {
-      for (uint32_t x : global) cavity.simplices.push_back(local.at(x));
+      for (uint32_t x : global) {
+        const auto it = std::lower_bound(local.begin(), local.end(), std::pair{x, 0u});
+        if (it == local.end() || it->first != x) throw std::logic_error("vertex deletion: a cavity face has a vertex off the link");
+        cavity.simplices.push_back(it->second);
+      }
       cavity.exterior.push_back(side);
     };
     // The link: v's side is inside. Facet i of a positive simplex has v (its vertex i) on the side
