@@ -319,13 +319,14 @@ Sign compare_power_tuples_across(const Vertices<D + 1>& s, const Vertices<D + 1>
     c[D] = x;
     return orient<D>(c);
   };
-  if (cospherical_tie<D>(s, t)) detail::count_tie();  // as the general path counts it (power differences all zero)
+  // The perturbed insphere counts a cospherical tie when it meets one (the general path counts it
+  // too). Comparing the enclosures first, as the callers do at Delta_0, cost more than the exact
+  // formula: two power enclosures against one filtered insphere and two orientations (star sweeps of
+  // Steiner points on flat facets, whose centre lies on aff(f) for every facet of a sheet).
   for (int k = 0; k < n; ++k) {
     const Sign o = side(delta[k].x);
     if (o == Sign::Zero) continue;
-    // Past Delta_0 (whose enclosures the callers compared already) the enclosures may be apart.
-    const std::optional<Sign> apart = k > 0 ? power_order_if_apart<D>(s, t, delta[k].x) : std::nullopt;
-    const Sign r = apart ? *apart : (inside_circumsphere<D>(s, t[apex]) ? Sign::Negative : Sign::Positive) * side(t[apex].x) * o;
+    const Sign r = (inside_circumsphere<D>(s, t[apex]) ? Sign::Negative : Sign::Positive) * side(t[apex].x) * o;
     return toward[k] > 0 ? r : -r;
   }
   return Sign::Zero;
