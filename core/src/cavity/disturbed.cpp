@@ -59,9 +59,9 @@ Disturbed disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const 
   result.tets.assign(tets, 0);
   if (missing.empty()) return result;
   std::vector<uint8_t>& disturbed = result.tets;
-  std::vector<uint32_t> tet_at(plc.num_points(), kNone);
+  std::vector<uint32_t> tet_at(plc.num_points(), kNone), degree(plc.num_points(), 0);
   for (uint32_t t = 0; t < tets; ++t)
-    for (int i = 0; i < 4; ++i) tet_at[dt.tets[4 * t + i]] = t;
+    for (int i = 0; i < 4; ++i) tet_at[dt.tets[4 * t + i]] = t, ++degree[dt.tets[4 * t + i]];
   std::vector<uint32_t> visited(tets, 0), star, queue;
   uint32_t stamp = 0;
   const auto visit = [&](uint32_t t) {
@@ -72,8 +72,10 @@ Disturbed disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const 
   for (const uint32_t c : missing) {
     ++stamp;
     const uint32_t* tri = plc.simplex(c);
-    // The tetrahedra around the constraint's first vertex a: a walk across the facets through a.
-    const uint32_t a = tri[0];
+    // The tetrahedra around the constraint's vertex a with the fewest: a walk across the facets
+    // through a. (Each is tested; an input vertex at the apex of a fan across a flat face can have
+    // hundreds, and a Steiner point on its edge a few dozen.)
+    const uint32_t a = *std::min_element(tri, tri + 3, [&](uint32_t x, uint32_t y) { return degree[x] < degree[y]; });
     queue.clear();
     star.assign(1, tet_at[a]);
     visit(star[0]);

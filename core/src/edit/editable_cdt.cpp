@@ -270,6 +270,7 @@ struct EditableCdt<D>::Impl {
 
     // The cavity as a PLC on the link's vertices, numbered in perturbation order.
     std::vector<uint32_t> ids;
+    ids.reserve(star.size() * D);
     for (uint32_t t : star)
       for (int i = 0; i <= D; ++i)
         if (simplex(t)[i] != v) ids.push_back(simplex(t)[i]);
@@ -294,6 +295,9 @@ struct EditableCdt<D>::Impl {
     // The link: v's side is inside. Facet i of a positive simplex has v (its vertex i) on the side
     // of sign (-1)^(D-i).
     std::vector<LinkFace> link;
+    link.reserve(star.size());
+    cavity.simplices.reserve(3 * star.size() * D);  // the link and about as much again for the sheets
+    cavity.exterior.reserve(3 * star.size());
     for (uint32_t t : star)
       for (int i = 0; i <= D; ++i)
         if (simplex(t)[i] == v) {

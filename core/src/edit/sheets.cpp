@@ -118,10 +118,8 @@ class SheetBuilder {
     if constexpr (D == 2) {
       return point_(through_v_[c][0])[0] != point_(through_v_[c][1])[0] ? 1 : 0;
     } else {
-      for (int k = 0; k < D; ++k) {
-        std::vector<uint32_t> ids(through_v_[c].begin(), through_v_[c].end() - 1);
-        if (projected_orient(ids, through_v_[c][D - 1], k) != Sign::Zero) return k;
-      }
+      for (int k = 0; k < D; ++k)
+        if (projected_orient(through_v_[c].data(), through_v_[c][D - 1], k) != Sign::Zero) return k;
       return 0;  // unreachable for a non-degenerate constraint
     }
   }
@@ -137,7 +135,6 @@ class SheetBuilder {
     for (int i = 0; i < D; ++i) c[i] = point_(i + 1 < D ? ids[i] : last);
     return predicates::orient_projected<D>(c, axis);
   }
-  Sign projected_orient(const std::vector<uint32_t>& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
   Sign projected_orient(const Ridge& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
   Sign projected_orient(std::initializer_list<uint32_t> ids, uint32_t last, int axis) const { return projected_orient(ids.begin(), last, axis); }
 
@@ -200,7 +197,7 @@ class SheetBuilder {
       const uint32_t c0 = sheet.constraints.front();
       const int axis = projection_axis(c0);
       // The fill is oriented like c0 within the hyperplane: the same sign of the projected orientation.
-      const Sign want = projected_orient(std::vector<uint32_t>(through_v_[c0].begin(), through_v_[c0].end() - 1), through_v_[c0][D - 1], axis);
+      const Sign want = projected_orient(through_v_[c0].data(), through_v_[c0][D - 1], axis);
       std::vector<Ridge> boundary;
       for (uint32_t c : sheet.constraints)
         for (int i = 0; i < D; ++i)
