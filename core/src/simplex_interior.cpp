@@ -1,7 +1,7 @@
 #include "simplex_interior.h"
 
 #include <algorithm>
-#include <vector>
+#include <array>
 
 #include "sweepcdt/predicates/orientation.h"
 
@@ -12,9 +12,9 @@ using predicates::Sign;
 template <int D>
 bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t) {
   // Quick answer first: t lies on the closed outer side of a facet hyperplane of s (the usual case).
+  const Sign inner = predicates::orient<D>(s);  // s's own orientation: each vertex's side of its facet
   for (int facet = 0; facet <= D; ++facet) {
     predicates::Coords<D + 1> plane = s;
-    const Sign inner = predicates::orient<D>(plane);  // s's own orientation, with s[facet] as apex
     bool outside = true;
     for (int k = 0; k < D && outside; ++k) {
       plane[facet] = t[k];
@@ -24,19 +24,19 @@ bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<
   }
   // Each distinct point once, with its membership: a shared vertex (same pointer into the point
   // array) constrains the sides of both simplices.
-  std::vector<const double*> points(s.begin(), s.end());
-  std::vector<char> in_s(D + 1, 1), in_t(D + 1, 0);
+  std::array<const double*, 2 * D + 1> points{};
+  std::array<char, 2 * D + 1> in_s{}, in_t{};
+  int n = D + 1;
+  for (int i = 0; i <= D; ++i) points[i] = s[i], in_s[i] = 1;
   for (const double* p : t) {
-    const auto it = std::find(points.begin(), points.end(), p);
-    if (it != points.end()) {
+    const auto it = std::find(points.begin(), points.begin() + n, p);
+    if (it != points.begin() + n) {
       in_t[it - points.begin()] = 1;
     } else {
-      points.push_back(p);
-      in_s.push_back(0);
-      in_t.push_back(1);
+      points[n] = p;
+      in_t[n++] = 1;
     }
   }
-  const int n = static_cast<int>(points.size());
 
   std::array<int, D> pick;
   for (int i = 0; i < D; ++i) pick[i] = i;
