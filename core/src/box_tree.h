@@ -63,17 +63,16 @@ class BoxTree {
   template <class Test, class Visit>
   void for_each_passing(Test&& test, Visit&& visit) const {
     if (nodes_.empty()) return;
-    std::vector<uint32_t> stack{0};
+    Stack stack;
     while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
+      const Node& node = nodes_[stack.pop()];
       if (!test(node.box)) continue;
       if (node.left == kLeaf) {
         for (uint32_t i = node.begin; i < node.end; ++i)
           if (test(boxes_[order_[i]])) visit(order_[i]);
       } else {
-        stack.push_back(node.left);
-        stack.push_back(node.left + 1);
+        stack.push(node.left);
+        stack.push(node.left + 1);
       }
     }
   }
@@ -82,17 +81,16 @@ class BoxTree {
   template <class Pred>
   bool any_overlap(const Box<D>& query, Pred&& pred) const {
     if (nodes_.empty()) return false;
-    std::vector<uint32_t> stack{0};
+    Stack stack;
     while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
+      const Node& node = nodes_[stack.pop()];
       if (!node.box.overlaps(query)) continue;
       if (node.left == kLeaf) {
         for (uint32_t i = node.begin; i < node.end; ++i)
           if (boxes_[order_[i]].overlaps(query) && pred(order_[i])) return true;
       } else {
-        stack.push_back(node.left);
-        stack.push_back(node.left + 1);
+        stack.push(node.left);
+        stack.push(node.left + 1);
       }
     }
     return false;
@@ -103,6 +101,20 @@ class BoxTree {
  private:
   static constexpr uint32_t kLeaf = 0xffffffffu;
   static constexpr uint32_t kLeafSize = 4;
+  // The nodes a depth-first walk has yet to visit, starting at the root. The tree is balanced (median
+  // splits), so it is at most 32 levels deep for 2^32 boxes, and a walk holds at most one node a
+  // level plus one: a fixed array, not a vector allocated by every query (the PLC check makes one
+  // query per simplex).
+  class Stack {
+   public:
+    bool empty() const { return size_ == 0; }
+    void push(uint32_t node) { slots_[size_++] = node; }
+    uint32_t pop() { return slots_[--size_]; }
+
+   private:
+    std::array<uint32_t, 64> slots_{};  // slots_[0] = 0: the root
+    uint32_t size_ = 1;
+  };
   struct Node {
     Box<D> box;
     uint32_t begin = 0, end = 0, left = kLeaf;  // children: nodes left and left + 1
