@@ -159,6 +159,13 @@ Sign orient2(const Coords<3>& p) {
   if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
   return detail::exact_sign(InsphereFormula<3>{p});
 }
+// D >= 4: two equal points (a face through the sweep sphere's seed vertex, tested against it) give
+// an exact zero that the wide integers would otherwise find (a tenth of a D = 4 sweep).
+template <int D, std::size_t N, class Formula>
+[[gnu::noinline]] Sign exact_unless_repeated(const std::array<const double*, N>& p, const Formula& formula) {
+  if (has_equal_points(p, D)) return detail::count_filtered(), Sign::Zero;
+  return detail::exact_sign(formula);
+}
 
 // The sign a hand-written filter's estimate certifies (filters3.h, filters4.h), else exact().
 template <class Exact>
@@ -174,15 +181,15 @@ template <int D>
 Sign orient(const Coords<D + 1>& p) {
   if constexpr (D == 2) return orient2(p);
   else if constexpr (D == 3) return certified_or(detail::orient3_estimate(p), [&] { return orient3_exact(p); });
-  else if constexpr (D == 4) return certified_or(detail::orient4_estimate(p), [&] { return detail::exact_sign(OrientFormula<4>{p}); });
-  else return detail::filtered_sign(OrientFormula<D>{p});
+  else if constexpr (D == 4) return certified_or(detail::orient4_estimate(p), [&] { return exact_unless_repeated<4>(p, OrientFormula<4>{p}); });
+  else return has_equal_points(p, D) ? (detail::count_filtered(), Sign::Zero) : detail::filtered_sign(OrientFormula<D>{p});
 }
 
 template <int D>
 Sign insphere(const Coords<D + 2>& p) {
   if constexpr (D == 3) return certified_or(detail::insphere3_estimate(p), [&] { return insphere3_exact(p); });
-  else if constexpr (D == 4) return certified_or(detail::insphere4_estimate(p), [&] { return detail::exact_sign(InsphereFormula<4>{p}); });
-  else return detail::filtered_sign(InsphereFormula<D>{p});
+  else if constexpr (D == 4) return certified_or(detail::insphere4_estimate(p), [&] { return exact_unless_repeated<4>(p, InsphereFormula<4>{p}); });
+  else return has_equal_points(p, D) ? (detail::count_filtered(), Sign::Zero) : detail::filtered_sign(InsphereFormula<D>{p});
 }
 
 template <int D>
