@@ -69,6 +69,29 @@ TEST(Validate, CorruptNeighbourIsReported) {
   EXPECT_GE(report.count("neighbors"), 1u) << report.summary();
 }
 
+// Two triangles apart: every point is a vertex and the boundary is closed and convex at every
+// ridge, yet it is not the hull's. Only testing points against boundary facets finds that (the
+// boundary's own vertices suffice: the domain lies in their convex hull). Tetrahedra in 3D and
+// 4-simplices in 4D the same way.
+TEST(Validate, SeparateConvexPiecesAreNotTheHull) {
+  const auto two = make<2>({0, 0, 1, 0, 0, 1, 3, 0, 4, 0, 3, 1}, {0, 1, 2, 3, 4, 5});
+  EXPECT_GE(validate(two, points_only(two)).count("domain-boundary"), 1u) << validate(two, points_only(two)).summary();
+  const auto one = make<2>({0, 0, 1, 0, 0, 1}, {0, 1, 2});
+  EXPECT_TRUE(validate(one, points_only(one)).ok()) << validate(one, points_only(one)).summary();
+
+  const auto two3 = make<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 3, 0, 0, 4, 0, 0, 3, 1, 0, 3, 0, 1}, {1, 0, 2, 3, 5, 4, 6, 7});
+  EXPECT_GE(validate(two3, points_only(two3)).count("domain-boundary"), 1u) << validate(two3, points_only(two3)).summary();
+  EXPECT_EQ(validate(two3, points_only(two3)).count("orientation"), 0u);
+
+  std::vector<double> p4;
+  for (const double shift : {0.0, 3.0})
+    for (int i = 0; i < 5; ++i)
+      for (int k = 0; k < 4; ++k) p4.push_back((k == 0 ? shift : 0.0) + (i == k + 1 ? 1.0 : 0.0));
+  const auto two4 = make<4>(p4, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
+  EXPECT_GE(validate(two4, points_only(two4)).count("domain-boundary"), 1u) << validate(two4, points_only(two4)).summary();
+  EXPECT_EQ(validate(two4, points_only(two4)).count("orientation"), 0u);
+}
+
 TEST(Validate, UnusedPointOfTheHullIsReported) {
   auto tri = square_with_centre();
   tri.simplices = {0, 1, 2, 0, 2, 3};  // centre left out
