@@ -159,8 +159,9 @@ Sign orient2(const Coords<3>& p) {
   if (has_equal_points(p, 3)) return detail::count_filtered(), Sign::Zero;
   return detail::exact_sign(InsphereFormula<3>{p});
 }
-// D >= 4: two equal points (a face through the sweep sphere's seed vertex, tested against it) give
-// an exact zero that the wide integers would otherwise find (a tenth of a D = 4 sweep).
+// D = 4, after its hand-written filter: two equal points (a face through the sweep sphere's seed
+// vertex, tested against it) give an exact zero that the wide integers would otherwise find (a tenth
+// of a D = 4 sweep). D >= 5 has one generic filter-and-exact call, so there the test comes first.
 template <int D, std::size_t N, class Formula>
 [[gnu::noinline]] Sign exact_unless_repeated(const std::array<const double*, N>& p, const Formula& formula) {
   if (has_equal_points(p, D)) return detail::count_filtered(), Sign::Zero;

@@ -28,9 +28,10 @@ struct Disturbed {
 };
 
 // Each missing constraint's disturbed tetrahedra are found by a search from the tetrahedra around one
-// of its vertices (the one with the fewest) through neighbours (they are connected across facets: every tetrahedron holding a
-// point of the constraint's relative interior is disturbed). Empty when the search finds none for a
-// missing constraint, which would contradict that (the caller then falls back to a full sweep).
+// of its vertices (the one with the fewest) through neighbours (they are connected across facets:
+// every tetrahedron holding a point of the constraint's relative interior is disturbed). Empty when
+// the search finds none for a missing constraint, which would contradict that (the caller then falls
+// back to a full sweep).
 Disturbed disturbed_tetrahedra(const Plc<3>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing);
 
 }  // namespace sweepcdt::detail

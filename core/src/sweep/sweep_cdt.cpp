@@ -138,7 +138,6 @@ class Sweep {
   }
   Side side(const FaceKey<D>& f, uint32_t p) const { return predicates::side_of<D>(frame_, coords(f), point(p)); }
   // The same for a face of the structure, from its stored front sign (no behind-side predicate).
-  Side side(const Face<D>& f, uint32_t p) const { return side_given_front(f.v, f.front, p); }
   Side side_given_front(const FaceKey<D>& f, int8_t front, uint32_t p) const {
     predicates::Coords<D + 1> c;
     for (int i = 0; i < D; ++i) c[i] = point(f[i]);
