@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "facet_hash.h"
+#include "parallel.h"
 #include "sweepcdt/triangulation.h"
 
 namespace sweepcdt::detail {
@@ -33,7 +34,7 @@ FacetKey<D> facet_key(const uint32_t* simplex, int opposite) {
 
 // Counting sort by the smallest vertex id, then small sorts within each bucket: O(s) for meshes.
 template <int D>
-std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri) {
+std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri, unsigned threads = 1) {
   const std::size_t n = tri.num_points();
   std::vector<uint32_t> start(n + 1, 0);
   for (uint32_t t = 0; t < tri.num_simplices(); ++t)
@@ -52,7 +53,10 @@ std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri) {
       if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
     return a.simplex < b.simplex;
   };
-  for (std::size_t v = 0; v < n; ++v) std::sort(facets.begin() + start[v], facets.begin() + start[v + 1], less);
+  // The buckets (one per smallest vertex) sort on their own: in parts of the vertices (parallel.h).
+  for_each_part(n, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) std::sort(facets.begin() + start[v], facets.begin() + start[v + 1], less);
+  });
   return facets;
 }
 

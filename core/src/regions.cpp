@@ -5,13 +5,14 @@
 #include <vector>
 
 #include "facets.h"
+#include "parallel.h"
 #include "tuple_map.h"
 #include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::detail {
 
 template <int D>
-void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
+void assign_regions(Triangulation<D>& tri, const Plc<D>& plc, unsigned threads) {
   const std::size_t s = tri.num_simplices();
   TupleMap<D> constraints(plc.num_simplices());
   for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
@@ -20,6 +21,18 @@ void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
     std::sort(k.begin(), k.end());
     constraints.emplace(k, 0);
   }
+  // Which interior facets are constraints: looked up in parts (a random access into the map each,
+  // most of the work at a million simplices), once per facet, from its lower-numbered simplex.
+  std::vector<uint8_t> constrained(tri.neighbors.size(), 0);
+  for_each_part(s, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t nb = tri.neighbors[(D + 1) * t + i];
+        if (nb == kNone || nb / (D + 1) < t) continue;
+        if (constraints.find(facet_key<D>(tri.simplex(static_cast<uint32_t>(t)), i)) != TupleMap<D>::kAbsent)
+          constrained[(D + 1) * t + i] = constrained[nb] = 1;
+      }
+  });
   // Components across unconstrained facets (breadth-first).
   std::vector<int32_t> component(s, -1);
   int32_t components = 0;
@@ -33,8 +46,7 @@ void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
       queue.pop_back();
       for (int i = 0; i <= D; ++i) {
         const uint32_t nb = tri.neighbors[(D + 1) * t + i];
-        if (nb == kNone || component[nb / (D + 1)] >= 0) continue;
-        if (constraints.find(facet_key<D>(tri.simplex(t), i)) != TupleMap<D>::kAbsent) continue;
+        if (nb == kNone || component[nb / (D + 1)] >= 0 || constrained[(D + 1) * t + i]) continue;
         component[nb / (D + 1)] = components;
         queue.push_back(nb / (D + 1));
       }
@@ -66,9 +78,9 @@ void assign_regions(Triangulation<D>& tri, const Plc<D>& plc) {
   for (uint32_t t = 0; t < s; ++t) tri.regions[t] = name[component[t]];
 }
 
-template void assign_regions<2>(Triangulation<2>&, const Plc<2>&);
-template void assign_regions<3>(Triangulation<3>&, const Plc<3>&);
-template void assign_regions<4>(Triangulation<4>&, const Plc<4>&);
-template void assign_regions<5>(Triangulation<5>&, const Plc<5>&);
+template void assign_regions<2>(Triangulation<2>&, const Plc<2>&, unsigned);
+template void assign_regions<3>(Triangulation<3>&, const Plc<3>&, unsigned);
+template void assign_regions<4>(Triangulation<4>&, const Plc<4>&, unsigned);
+template void assign_regions<5>(Triangulation<5>&, const Plc<5>&, unsigned);
 
 }  // namespace sweepcdt::detail

@@ -7,8 +7,8 @@
 
 namespace sweepcdt::detail {
 
-// Needs tri.neighbors.
+// Needs tri.neighbors. On `threads` threads (parallel.h); the result does not depend on their number.
 template <int D>
-void assign_regions(Triangulation<D>& tri, const Plc<D>& plc);
+void assign_regions(Triangulation<D>& tri, const Plc<D>& plc, unsigned threads);
 
 }  // namespace sweepcdt::detail

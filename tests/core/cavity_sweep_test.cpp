@@ -88,7 +88,7 @@ TEST(CavitySweep, ConstraintsOverlappingDelaunayFacesInTheirPlaneDisturbThem) {
   plc.simplices = {0, 1, 2, 0, 2, 3};
   const detail::DelaunayMesh dt = detail::delaunay_mesh(plc.points);
   ASSERT_EQ(dt.tets.size(), 16u) << "the bipyramid over ABD and BCD";
-  const detail::ConstraintFaces faces = detail::constraint_faces(plc, dt);
+  const detail::ConstraintFaces faces = detail::constraint_faces(plc, dt, 1);
   EXPECT_EQ(faces.missing, (std::vector<uint32_t>{0, 1}));
   for (std::size_t t = 0; t < 4; ++t)
     for (uint32_t c = 0; c < 2; ++c)

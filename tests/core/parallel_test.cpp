@@ -4,10 +4,13 @@
 // (parallel.h: kItemsPerThread items a part), which each test checks first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
+#include <map>
 #include <random>
 
 #include "cad_noise.h"
+#include "cavity/disturbed.h"
 #include "edit/remove_steiner.h"
 #include "parallel.h"
 #include "steiner/delaunay3.h"
@@ -112,6 +115,41 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
       EXPECT_EQ(b.regions.size(), a.regions.size());
       EXPECT_EQ(stats.algorithm, algorithm) << what;
     }
+  }
+}
+
+// The cavity sweep's constraints among the Delaunay facets (cavity/disturbed.h), looked up in parts:
+// per facet, the constraint a brute-force map of the constraints' vertex sets names, on both sides of
+// it; the missing ones; the same on one thread and on several.
+TEST(Parallel, ConstraintFacesAsABruteForceLookupFindsThem) {
+  const Plc<3> plc = comb(600);
+  const detail::DelaunayMesh dt = detail::delaunay_mesh(plc.points);
+  const std::size_t tets = dt.tets.size() / 4;
+  ASSERT_GT(detail::parts_for(tets, kMany), 1u);
+  std::map<std::array<uint32_t, 3>, uint32_t> constraint;
+  for (uint32_t c = 0; c < plc.num_simplices(); ++c) {
+    std::array<uint32_t, 3> key{plc.simplex(c)[0], plc.simplex(c)[1], plc.simplex(c)[2]};
+    std::sort(key.begin(), key.end());
+    constraint[key] = c;
+  }
+  std::vector<uint32_t> expected(4 * tets, kNone);
+  std::vector<char> present(plc.num_simplices(), 0);
+  for (std::size_t t = 0; t < tets; ++t)
+    for (int i = 0; i < 4; ++i) {
+      std::array<uint32_t, 3> key;
+      for (int k = 0, r = 0; k < 4; ++k)
+        if (k != i) key[r++] = dt.tets[4 * t + k];
+      std::sort(key.begin(), key.end());
+      if (const auto it = constraint.find(key); it != constraint.end()) expected[4 * t + i] = it->second, present[it->second] = 1;
+    }
+  std::vector<uint32_t> missing;
+  for (uint32_t c = 0; c < plc.num_simplices(); ++c)
+    if (!present[c]) missing.push_back(c);
+  ASSERT_GT(std::count(present.begin(), present.end(), 1), 1000);
+  for (const unsigned threads : {1u, kMany}) {
+    const detail::ConstraintFaces faces = detail::constraint_faces(plc, dt, threads);
+    EXPECT_EQ(faces.of_facet, expected) << threads << " threads";
+    EXPECT_EQ(faces.missing, missing) << threads << " threads";
   }
 }
 

@@ -72,11 +72,11 @@ std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& opt
     delaunay = &computed;
   }
   const DelaunayMesh& dt = *delaunay;
-  const ConstraintFaces constraints = constraint_faces(plc, dt);
+  const ConstraintFaces constraints = constraint_faces(plc, dt, options.threads);
   stats.missing_constraints = constraints.missing.size();
   const Disturbed disturbed = disturbed_tetrahedra(plc, dt, constraints.missing);
   if (disturbed.tets.size() != dt.tets.size() / 4) return std::nullopt;
-  const std::vector<Place> place = domain_sides(plc, dt, constraints.of_facet, disturbed.tets);
+  const std::vector<Place> place = domain_sides(plc, dt, constraints.of_facet, disturbed.tets, options.threads);
   if (place.empty()) return std::nullopt;
   for (const Place p : place) stats.cavity_tetrahedra += p == Place::Cavity;
   const Cavities cavities = cavity_plcs(plc, dt, constraints.of_facet, constraints.missing, disturbed.first, place);

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "../facets.h"
+#include "../parallel.h"
 #include "../simplex_interior.h"
 #include "../simplex_intersection.h"
 #include "../tuple_map.h"
@@ -29,7 +30,7 @@ bool disturbs(const Plc<3>& plc, const uint32_t* tet, const uint32_t* tri) {
 
 }  // namespace
 
-ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt) {
+ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt, unsigned threads) {
   const std::size_t m = plc.num_simplices(), tets = dt.tets.size() / 4;
   TupleMap<3> constraint_of(m);
   for (uint32_t c = 0; c < m; ++c) {
@@ -40,14 +41,23 @@ ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt) {
   }
   ConstraintFaces result;
   result.of_facet.assign(4 * tets, kNone);
+  // Each facet is looked up once, from the lower-numbered of its two tetrahedra, which writes both
+  // sides: so each entry has one writer, and the parts run on their own (a random access into the
+  // map per lookup: 0.77 s at 1.3M triangles on one thread, looking up every facet twice).
+  for_each_part(tets, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (int i = 0; i < 4; ++i) {
+        const uint32_t across = dt.neighbors[4 * t + i];
+        if (across != kNone && across / 4 < t) continue;
+        const uint32_t c = constraint_of.find(facet_key<3>(&dt.tets[4 * t], i));
+        if (c == TupleMap<3>::kAbsent) continue;
+        result.of_facet[4 * t + i] = c;
+        if (across != kNone) result.of_facet[across] = c;
+      }
+  });
   std::vector<uint8_t> present(m, 0);
-  for (uint32_t t = 0; t < tets; ++t)
-    for (int i = 0; i < 4; ++i) {
-      const uint32_t c = constraint_of.find(facet_key<3>(&dt.tets[4 * t], i));
-      if (c == TupleMap<3>::kAbsent) continue;
-      result.of_facet[4 * t + i] = c;
-      present[c] = 1;
-    }
+  for (const uint32_t c : result.of_facet)
+    if (c != kNone) present[c] = 1;
   for (uint32_t c = 0; c < m; ++c)
     if (!present[c]) result.missing.push_back(c);
   return result;

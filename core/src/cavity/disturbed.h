@@ -20,7 +20,8 @@ struct ConstraintFaces {
   std::vector<uint32_t> missing;   // the constraints that are no facet of the mesh
 };
 
-ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt);
+// On `threads` threads (parallel.h); the result does not depend on their number.
+ConstraintFaces constraint_faces(const Plc<3>& plc, const DelaunayMesh& dt, unsigned threads);
 
 struct Disturbed {
   std::vector<uint8_t> tets;    // per tetrahedron of the mesh: 1 when some missing constraint disturbs it
