@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <exception>
+#include <memory>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "../parallel.h"
 #include "../segment_interior.h"
+#include "../tuple_map.h"
 #include "delaunay3.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
@@ -32,18 +37,29 @@ std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options)
-      : options_(options), groups_(group_facets(input, options.facets)) {
-    r_.plc.region_seeds = input.region_seeds;
-    r_.num_input_points = static_cast<uint32_t>(input.num_points());
-    r_.facets = groups_.num_facets();
-    points_ = input.points;
-    on_segment_.assign(input.num_points(), {kNone, kNone});
-    tris_ = groups_.triangles;
-    unflipped_.assign(tris_.size(), 1);
-    for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
-    for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
+  Refiner(const Plc<3>& input, const Options& options) : options_(options), points_(input.points) {
+    // The Delaunay triangulation needs only the points: given a second thread, it is computed there
+    // while the facets are grouped (1.3M triangles: 2.5 s beside 1.2 s).
+    if (options_.steiner == SteinerMode::Auto && thread_count(options_.threads) > 1)
+      helper_ = std::thread([this] {
+        try {
+          first_delaunay_ = std::make_unique<DelaunayEdges>(points_);
+        } catch (...) {
+          helper_error_ = std::current_exception();
+        }
+      });
+    try {
+      set_up(input);
+    } catch (...) {
+      if (helper_.joinable()) helper_.join();  // no destructor runs for a constructor that throws
+      throw;
+    }
   }
+  ~Refiner() {
+    if (helper_.joinable()) helper_.join();
+  }
+  Refiner(const Refiner&) = delete;
+  Refiner& operator=(const Refiner&) = delete;
 
   RefinedPlc run() {
     if (options_.steiner == SteinerMode::Auto)
@@ -62,6 +78,18 @@ class Refiner {
   }
 
  private:
+  void set_up(const Plc<3>& input) {
+    groups_ = group_facets(input, options_.facets);
+    r_.plc.region_seeds = input.region_seeds;
+    r_.num_input_points = static_cast<uint32_t>(input.num_points());
+    r_.facets = groups_.num_facets();
+    on_segment_.assign(input.num_points(), {kNone, kNone});
+    tris_ = groups_.triangles;
+    unflipped_.assign(tris_.size(), 1);
+    for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
+    for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
+  }
+
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
 
   // Per refined triangle: whether its facet holds a Steiner point that is not exactly on its input
@@ -89,7 +117,7 @@ class Refiner {
   // the same order, so the facets' flips start from the same fans: splitting once per round instead
   // tripled gearwheel's flips), but it neither scans every segment nor flips the facets.
   void split_until_delaunay() {
-    DelaunayEdges delaunay(points_);  // kept up to date as points are added
+    DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
       delaunay.insert_new_points();  // the Steiner points of the last round
       std::unordered_map<uint64_t, uint32_t> new_point;
@@ -122,6 +150,14 @@ class Refiner {
     }
   }
 
+  // The triangulation of the input points: the helper's, or computed here.
+  DelaunayEdges& first_delaunay() {
+    if (helper_.joinable()) helper_.join();
+    if (helper_error_) std::rethrow_exception(helper_error_);
+    if (!first_delaunay_) first_delaunay_ = std::make_unique<DelaunayEdges>(points_);
+    return *first_delaunay_;
+  }
+
   void report_progress() const {
     if (options_.progress && !options_.progress({"steiner points", r_.steiner_on.size(), 0})) throw CancelledError();
   }
@@ -143,13 +179,13 @@ class Refiner {
   // new points' cavities touched need checking again.
   std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) const {
     std::vector<uint64_t> split;
-    std::unordered_set<uint64_t> marked;
+    TupleMap<2> seen(tris_.size() * 3 / 2);  // every edge once (a flat table: 1.3M triangles made 2M nodes)
     for (const Triangle& t : tris_)
       for (int i = 0; i < 3; ++i) {
         const uint32_t a = t[i], b = t[(i + 1) % 3];
-        if (!delaunay.may_have_changed(a, b)) continue;
+        if (!delaunay.may_have_changed(a, b) || !seen.emplace({std::min(a, b), std::max(a, b)}, 0).second) continue;
         const uint64_t key = edge_key(a, b);
-        if (groups_.segments.count(key) && marked.insert(key).second && !delaunay.has_edge(a, b)) split.push_back(key);
+        if (groups_.segments.count(key) && !delaunay.has_edge(a, b)) split.push_back(key);
       }
     return split;
   }
@@ -445,9 +481,12 @@ class Refiner {
   }
 
   const Options& options_;
+  std::vector<double> points_;  // first: the helper thread reads it from the start
+  std::unique_ptr<DelaunayEdges> first_delaunay_;
+  std::exception_ptr helper_error_;
+  std::thread helper_;
   FacetGroups groups_;
   RefinedPlc r_;
-  std::vector<double> points_;
   std::vector<std::array<uint32_t, 2>> on_segment_;  // per point: the input segment it lies on (input points: none)
   std::vector<double> parameter_;  // per Steiner point: its t along on_segment_ (sweepcdt/steiner_point.h)
   std::vector<Triangle> tris_;
