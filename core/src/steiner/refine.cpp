@@ -88,6 +88,8 @@ class Refiner {
     unflipped_.assign(tris_.size(), 1);
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
     for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
+    if (options_.steiner == SteinerMode::Auto)
+      for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
   }
 
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
@@ -132,6 +134,11 @@ class Refiner {
       // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
       // rounding left in it when they are not Delaunay either (see folds_not_in).
       flip_facets();
+      // Folds come from rounded Steiner points: without any, every facet is exactly flat.
+      if (r_.steiner_on.empty()) {
+        r_.delaunay = delaunay.mesh();
+        return;
+      }
       flip_folds(delaunay);
       const std::vector<Fold> folds = folds_not_in(delaunay);
       if (folds.empty()) {
@@ -176,18 +183,33 @@ class Refiner {
   // Segments that are not Delaunay, each once, in triangle order (deterministic): a round's first
   // pass (the later ones: changed_segments_not_in). A segment checked in an earlier round and still
   // there was Delaunay then (the others were split), so only new segments and those whose ends the
-  // new points' cavities touched need checking again.
-  std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) const {
+  // new points' cavities touched need checking again. In the first round every one is checked, from
+  // the list set_up made while the tetrahedralization was computed (most of the scan's time).
+  std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) {
     std::vector<uint64_t> split;
+    const auto check = [&](uint64_t key) {
+      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) split.push_back(key);
+    };
+    if (r_.rounds == 0) {
+      for (const uint64_t key : first_segments_) check(key);
+      first_segments_ = {};
+    } else {
+      for_each_segment([&](uint64_t key) { check(key); }, [&](uint32_t a, uint32_t b) { return delaunay.may_have_changed(a, b); });
+    }
+    return split;
+  }
+
+  // visit(key) for each segment once, in triangle order, whose ends pass `ends(a, b)`.
+  template <class Visit, class Ends>
+  void for_each_segment(Visit&& visit, Ends&& ends) const {
     TupleMap<2> seen(tris_.size() * 3 / 2);  // every edge once (a flat table: 1.3M triangles made 2M nodes)
     for (const Triangle& t : tris_)
       for (int i = 0; i < 3; ++i) {
         const uint32_t a = t[i], b = t[(i + 1) % 3];
-        if (!delaunay.may_have_changed(a, b) || !seen.emplace({std::min(a, b), std::max(a, b)}, 0).second) continue;
+        if (!ends(a, b) || !seen.emplace({std::min(a, b), std::max(a, b)}, 0).second) continue;
         const uint64_t key = edge_key(a, b);
-        if (groups_.segments.count(key) && !delaunay.has_edge(a, b)) split.push_back(key);
+        if (groups_.segments.count(key)) visit(key);
       }
-    return split;
   }
 
   // The same, after a pass: only segments with an end that the pass changed can have changed (their
@@ -493,6 +515,7 @@ class Refiner {
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
   std::vector<char> unflipped_;      // per triangle: new, or changed, since the facets' last flips
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
+  std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
 };
