@@ -67,15 +67,14 @@ bool inside_shell(const Surface& surface, const std::vector<uint32_t>& triangles
 }
 
 int volume_sign(const Surface& surface, const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& reversed) {
-  predicates::ExactMeasureSum volume;
   const double* origin = surface.points.data() + 3 * std::size_t{surface.triangles[3 * triangles[0]]};
-  for (uint32_t t : triangles) {
+  const auto point = [&](uint32_t v) { return surface.points.data() + 3 * std::size_t{v}; };
+  return to_int(predicates::volume_sum_sign(triangles.size(), [&](std::size_t k, bool& negate) {
+    const uint32_t t = triangles[k];
     const uint32_t* v = surface.triangles.data() + 3 * std::size_t{t};
-    volume.add_volume<3>({surface.points.data() + 3 * std::size_t{v[0]}, surface.points.data() + 3 * std::size_t{v[1]},
-                          surface.points.data() + 3 * std::size_t{v[2]}, origin},
-                         reversed[t] != 0);
-  }
-  return to_int(volume.compare(predicates::ExactMeasureSum()));
+    negate = reversed[t] != 0;
+    return predicates::Coords<4>{point(v[0]), point(v[1]), point(v[2]), origin};
+  }));
 }
 
 void nest_shells(const Surface& surface, const std::vector<std::vector<uint32_t>>& shell_triangles, std::vector<Shell>& shells) {

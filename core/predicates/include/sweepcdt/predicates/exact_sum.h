@@ -1,6 +1,8 @@
 // ExactMeasureSum: an exact running sum of simplex measures (orientation determinants), so that
 // validate() can compare volumes without rounding: "the simplices cover exactly the domain".
 #pragma once
+#include <cstddef>
+#include <functional>
 #include <memory>
 
 #include "sweepcdt/predicates/sign.h"
@@ -31,5 +33,12 @@ class ExactMeasureSum {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The sign of the sum over n tetrahedra of det [p_i - p_3] (6 times the signed volume), term k
+// negated when `term(k, negate)` sets negate: a floating-point sum with a certified error bound
+// (the orientation filter's bound for each term, plus the summation's), and the exact sum above only
+// when that bound cannot tell. io's surface check orients each closed shell by it: summed exactly,
+// 1.3M triangles took a tenth of reading the file.
+Sign volume_sum_sign(std::size_t n, const std::function<Coords<4>(std::size_t k, bool& negate)>& term);
 
 }  // namespace sweepcdt::predicates
