@@ -95,7 +95,8 @@ std::string version2(const VolumeMesh& m, const std::map<int64_t, Entity>& volum
     out += " 2 2 " + std::to_string(kBoundaryPhysical) + " " + std::to_string(surface_entity(m.boundary_tags[b]));
     triangle_line(out, m, b);
   }
-  return out + "$EndElements\n";
+  out += "$EndElements\n";
+  return out;
 }
 
 void entity_line(std::string& out, int64_t tag, const Entity& e, int64_t physical) {
@@ -146,7 +147,8 @@ std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volu
       triangle_line(out, m, k);
     }
   }
-  return out + "$EndElements\n";
+  out += "$EndElements\n";
+  return out;
 }
 
 }  // namespace

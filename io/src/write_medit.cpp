@@ -41,7 +41,8 @@ std::string medit_text(const VolumeMesh& m) {
       out += '\n';
     }
   }
-  return out + "\nEnd\n";
+  out += "\nEnd\n";
+  return out;
 }
 
 }  // namespace sweepcdt::io::detail

@@ -65,7 +65,8 @@ std::string stl_ascii(const Soup& s) {
     for (int c = 0; c < 3; ++c) out += "vertex " + point_text(s, s.triangles[3 * t + c]) + "\n";
     out += "endloop\nendfacet\n";
   }
-  return out + "endsolid sweepcdt\n";
+  out += "endsolid sweepcdt\n";
+  return out;
 }
 
 std::string stl_binary(const Soup& s) {
