@@ -126,9 +126,29 @@ class Inspector {
         uses_.push_back({std::min(u, v), std::max(u, v), t, c, u < v});
       }
     }
-    std::sort(uses_.begin(), uses_.end(), [](const EdgeUse& x, const EdgeUse& y) {
-      return std::tie(x.lo, x.hi, x.triangle, x.corner) < std::tie(y.lo, y.hi, y.triangle, y.corner);
-    });
+    // In (lo, hi, triangle, corner) order, as one sort would leave them: the uses come in (triangle,
+    // corner) order, so a stable counting sort by lo and then a stable sort of each (small) bucket by
+    // hi give exactly that, in linear time (one sort of the 3.9M uses of 1.3M triangles was a
+    // twentieth of reading and checking them).
+    uint32_t buckets = 0;
+    for (const EdgeUse& e : uses_) buckets = std::max(buckets, e.lo + 1);
+    std::vector<uint32_t> start(std::size_t{buckets} + 1, 0);
+    for (const EdgeUse& e : uses_) ++start[e.lo + 1];
+    for (uint32_t v = 0; v < buckets; ++v) start[v + 1] += start[v];
+    std::vector<EdgeUse> sorted(uses_.size());
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (const EdgeUse& e : uses_) sorted[fill[e.lo]++] = e;
+    const auto by_hi = [](const EdgeUse& x, const EdgeUse& y) { return x.hi < y.hi; };
+    for (uint32_t v = 0; v < buckets; ++v) {
+      const auto first = sorted.begin() + start[v], last = sorted.begin() + start[v + 1];
+      if (last - first > 32) {
+        std::stable_sort(first, last, by_hi);  // a fan's apex
+        continue;
+      }
+      for (auto i = first + (first != last); i < last; ++i)  // insertion sort: stable, no buffer
+        for (auto j = i; j > first && by_hi(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+    }
+    uses_.swap(sorted);
   }
 
   template <class F>
