@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
+#include <string>
 
 #include "brute_force_delaunay.h"
 #include "off_reader.h"
@@ -134,6 +135,48 @@ TEST(Progress, ReportsAndCancels) {
     EXPECT_GT(calls, 0) << to_string(algorithm);
     options.progress = [](const Progress&) { return false; };
     EXPECT_THROW(cdt(plc, options), CancelledError) << to_string(algorithm);
+  }
+}
+
+// Cancelling the default pipeline (refinement with a Delaunay tetrahedralization on a helper thread,
+// Steiner points, their deletion) at each of its first reports, on two threads: CancelledError every
+// time, and the helper stopped with it (a refinement that ended early waits for it).
+TEST(Progress, CancelsTheDefaultPipelineAtEveryReport) {
+  const Plc<3> plc = fixtures::twisted_prism(0.6);  // no CDT without Steiner points
+  Options options = mesh_defaults();
+  options.threads = 2;
+  int reports = 0;
+  options.progress = [&](const Progress&) { return ++reports, true; };
+  ASSERT_NO_THROW(cdt(plc, options));
+  ASSERT_GT(reports, 1);
+  for (int stop_at = 1; stop_at <= reports; ++stop_at) {
+    int calls = 0;
+    options.progress = [&](const Progress&) { return ++calls < stop_at; };
+    EXPECT_THROW(cdt(plc, options), CancelledError) << "cancelled at report " << stop_at;
+  }
+}
+
+// Refinement's Delaunay tetrahedralization reports progress ("Delaunay") and can be cancelled there,
+// on one thread and with the helper thread that computes it while the facets are grouped.
+TEST(Progress, RefinementsTetrahedralizationReportsAndCancels) {
+  const Plc<3> plc = fixtures::grid_box_surface(24);  // 3458 points: reports every 1024 insertions
+  ASSERT_GT(plc.num_points(), 2048u);
+  for (const unsigned threads : {1u, 2u}) {
+    Options options = mesh_defaults();
+    options.threads = threads;
+    int reports = 0;
+    options.progress = [&](const Progress& p) {
+      if (std::string(p.phase) == "Delaunay") {
+        ++reports;
+        EXPECT_LE(p.done, p.total);
+        EXPECT_EQ(p.total, plc.num_points());
+      }
+      return true;
+    };
+    ASSERT_NO_THROW(cdt(plc, options)) << threads;
+    EXPECT_GT(reports, 0) << threads << " threads";
+    options.progress = [](const Progress& p) { return std::string(p.phase) != "Delaunay"; };
+    EXPECT_THROW(cdt(plc, options), CancelledError) << threads << " threads";
   }
 }
 

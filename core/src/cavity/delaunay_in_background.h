@@ -1,12 +1,15 @@
-// The Delaunay tetrahedralization of a PLC's points, computed on a helper thread while the calling
-// thread checks the PLC (cdt()): the check does not need it and the cavity sweep starts from it, so
-// on two cores the check costs no time of its own. On a PLC the check rejects, the helper is told to
-// stop and its work is thrown away. The mesh is a pure function of the points (delaunay3.h), so the
-// result does not depend on this.
+// A Delaunay tetrahedralization computed on a helper thread while the calling thread does other work
+// that does not need it: cdt() checks the PLC meanwhile (the cavity sweep starts from the mesh), and
+// refinement groups the facets (steiner/refine.cpp starts from DelaunayEdges). On two cores the other
+// work then costs no time of its own. When the caller ends early (a PLC the check rejects, an error,
+// a cancel), the helper is told to stop and its work is thrown away. The triangulation is a pure
+// function of the points (delaunay3.h), so the result does not depend on this.
 #pragma once
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstddef>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -16,16 +19,19 @@
 
 namespace sweepcdt::detail {
 
-class DelaunayInBackground {
+// `make(inserted)` on a helper thread, where make builds a triangulation and calls inserted(points so
+// far) every 1024 insertions (delaunay_mesh, DelaunayEdges); `inserted` throws when the helper is to stop.
+template <class Result>
+class InBackground {
  public:
-  // Starts on `points` (which must outlive this object and not change).
-  explicit DelaunayInBackground(const std::vector<double>& points)
-      : thread_([this, &points] {
+  using Inserted = std::function<void(std::size_t)>;
+  explicit InBackground(std::function<Result(const Inserted&)> make)
+      : thread_([this, make = std::move(make)] {
           try {
-            mesh_ = delaunay_mesh(points, [this](std::size_t inserted) {
+            result_.emplace(make([this](std::size_t inserted) {
               inserted_.store(inserted, std::memory_order_relaxed);
               if (stop_.load(std::memory_order_relaxed)) throw Stopped();
-            });
+            }));
           } catch (...) {
             // stopped, or no tetrahedralization (e.g. all points in one plane): the caller computes
             // it, or fails, without the helper
@@ -34,18 +40,18 @@ class DelaunayInBackground {
           done_ = true;
           finished_.notify_all();
         }) {}
-  ~DelaunayInBackground() {
+  ~InBackground() {
     stop_ = true;
     if (thread_.joinable()) thread_.join();
   }
-  DelaunayInBackground(const DelaunayInBackground&) = delete;
-  DelaunayInBackground& operator=(const DelaunayInBackground&) = delete;
+  InBackground(const InBackground&) = delete;
+  InBackground& operator=(const InBackground&) = delete;
 
-  // Waits for the helper: its mesh, or null when it found none. Meanwhile, and once at the end,
+  // Waits for the helper: its result, or null when it found none. Meanwhile, and once at the end,
   // `report(inserted)` is called on this thread with the points inserted so far; when it returns
   // false the helper is stopped and get() returns null (the caller cancels).
   template <class Report>
-  const DelaunayMesh* get(Report&& report) {
+  Result* get(Report&& report) {
     {
       std::unique_lock lock(mutex_);
       while (!done_) {
@@ -62,7 +68,7 @@ class DelaunayInBackground {
     }
     if (thread_.joinable()) thread_.join();
     if (!stop_ && !report(inserted_.load(std::memory_order_relaxed))) stop_ = true;  // at least one report
-    return stop_ ? nullptr : mesh_ ? &*mesh_ : nullptr;
+    return stop_ ? nullptr : result_ ? &*result_ : nullptr;
   }
 
  private:
@@ -72,8 +78,15 @@ class DelaunayInBackground {
   std::mutex mutex_;
   std::condition_variable finished_;
   bool done_ = false;
-  std::optional<DelaunayMesh> mesh_;
+  std::optional<Result> result_;
   std::thread thread_;  // last: starts once the members it uses exist
+};
+
+// The cavity sweep's: the mesh of `points` (which must outlive this object and not change).
+class DelaunayInBackground : public InBackground<DelaunayMesh> {
+ public:
+  explicit DelaunayInBackground(const std::vector<double>& points)
+      : InBackground<DelaunayMesh>([&points](const Inserted& inserted) { return delaunay_mesh(points, inserted); }) {}
 };
 
 }  // namespace sweepcdt::detail

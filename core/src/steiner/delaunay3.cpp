@@ -534,9 +534,10 @@ struct DelaunayEdges::Impl {
   Delaunay3 triangulation;
 };
 
-DelaunayEdges::DelaunayEdges(const std::vector<double>& points) : impl_(std::make_unique<Impl>(points)) {
+DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted)
+    : impl_(std::make_unique<Impl>(points)) {
   check_points(points);
-  impl_->triangulation.build(brio_order(points));
+  impl_->triangulation.build(brio_order(points), inserted);
 }
 
 DelaunayEdges::~DelaunayEdges() = default;

@@ -48,8 +48,9 @@ std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra_in_order(const std::vec
 // inserted, and edges looked up, without rebuilding it (refine.cpp asks once per segment per round).
 class DelaunayEdges {
  public:
-  // Triangulates `points`, which must outlive this object; same requirements as above.
-  explicit DelaunayEdges(const std::vector<double>& points);
+  // Triangulates `points`, which must outlive this object; same requirements as above. `inserted`
+  // as for delaunay_mesh (it may throw to cancel).
+  explicit DelaunayEdges(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
   ~DelaunayEdges();
   // Inserts the points appended to `points` since the last call (or the construction), if any.
   void insert_new_points();

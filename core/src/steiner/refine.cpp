@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <exception>
 #include <memory>
 #include <string>
-#include <thread>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "../cavity/delaunay_in_background.h"
 #include "../parallel.h"
 #include "../segment_interior.h"
 #include "../tuple_map.h"
@@ -41,25 +40,9 @@ class Refiner {
     // The Delaunay triangulation needs only the points: given a second thread, it is computed there
     // while the facets are grouped (1.3M triangles: 2.5 s beside 1.2 s).
     if (options_.steiner == SteinerMode::Auto && thread_count(options_.threads) > 1)
-      helper_ = std::thread([this] {
-        try {
-          first_delaunay_ = std::make_unique<DelaunayEdges>(points_);
-        } catch (...) {
-          helper_error_ = std::current_exception();
-        }
-      });
-    try {
-      set_up(input);
-    } catch (...) {
-      if (helper_.joinable()) helper_.join();  // no destructor runs for a constructor that throws
-      throw;
-    }
+      helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
+    set_up(input);  // when it throws, helper_ is stopped as it is destroyed
   }
-  ~Refiner() {
-    if (helper_.joinable()) helper_.join();
-  }
-  Refiner(const Refiner&) = delete;
-  Refiner& operator=(const Refiner&) = delete;
 
   RefinedPlc run() {
     if (options_.steiner == SteinerMode::Auto)
@@ -157,11 +140,24 @@ class Refiner {
     }
   }
 
-  // The triangulation of the input points: the helper's, or computed here.
+  // The triangulation of the input points: the helper's, or computed here (also when the helper
+  // failed: the same error then comes from here). Reports "Delaunay" progress meanwhile, on this
+  // thread, and cancels when told to.
   DelaunayEdges& first_delaunay() {
-    if (helper_.joinable()) helper_.join();
-    if (helper_error_) std::rethrow_exception(helper_error_);
-    if (!first_delaunay_) first_delaunay_ = std::make_unique<DelaunayEdges>(points_);
+    bool cancelled = false;
+    const auto report = [&](std::size_t inserted) {
+      cancelled = options_.progress && !options_.progress({"Delaunay", inserted, r_.num_input_points});
+      return !cancelled;
+    };
+    if (helper_) {
+      if (std::unique_ptr<DelaunayEdges>* made = helper_->get(report)) first_delaunay_ = std::move(*made);
+      helper_.reset();
+      if (cancelled) throw CancelledError();
+    }
+    if (!first_delaunay_)
+      first_delaunay_ = std::make_unique<DelaunayEdges>(points_, [&](std::size_t inserted) {
+        if (!report(inserted)) throw CancelledError();
+      });
     return *first_delaunay_;
   }
 
@@ -505,8 +501,7 @@ class Refiner {
   const Options& options_;
   std::vector<double> points_;  // first: the helper thread reads it from the start
   std::unique_ptr<DelaunayEdges> first_delaunay_;
-  std::exception_ptr helper_error_;
-  std::thread helper_;
+  std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
   FacetGroups groups_;
   RefinedPlc r_;
   std::vector<std::array<uint32_t, 2>> on_segment_;  // per point: the input segment it lies on (input points: none)
