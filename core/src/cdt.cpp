@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cavity/cavity_cdt.h"
-#include "cavity/delaunay_in_background.h"
+#include "steiner/delaunay_in_background.h"
 #include "parallel.h"
 #include "gift_wrap.h"
 #include "regions.h"
@@ -256,8 +256,8 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
       delaunay.emplace(plc.points);
   // The tetrahedralization takes a thread of its own and the check the others: a check on every
   // thread competes with it for its core, and it is the longer of the two (1.3M triangles on 2
-  // cores: check on two threads 2.1 s, then 1 s more of waiting; on one thread 2.4 s, and about
-  // 0.5 s of waiting; sweep_bench 6.2 -> 5.2 s with this commit's other steps).
+  // cores: a check on two threads took 2.1 s, then 1 s more of waiting; on one thread 2.4 s, then
+  // about 0.5 s).
   check(plc, delaunay ? std::max(1u, detail::thread_count(options.threads) - 1) : options.threads);
   stats.seconds_check = clock.lap();
   const detail::DelaunayMesh* mesh = nullptr;

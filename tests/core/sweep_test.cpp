@@ -138,9 +138,9 @@ TEST(Progress, ReportsAndCancels) {
   }
 }
 
-// Cancelling the default pipeline (refinement with a Delaunay tetrahedralization on a helper thread,
-// Steiner points, their deletion) at each of its first reports, on two threads: CancelledError every
-// time, and the helper stopped with it (a refinement that ended early waits for it).
+// Cancelling the default pipeline (refinement, with its Delaunay tetrahedralization on a helper
+// thread, Steiner points, their deletion) at each of its reports, on two threads: CancelledError every
+// time, and nothing left running (a helper thread never joined would end the process).
 TEST(Progress, CancelsTheDefaultPipelineAtEveryReport) {
   const Plc<3> plc = fixtures::twisted_prism(0.6);  // no CDT without Steiner points
   Options options = mesh_defaults();

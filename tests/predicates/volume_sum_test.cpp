@@ -55,19 +55,20 @@ Term random_term(std::mt19937_64& rng, double scale) {
 
 TEST(VolumeSum, SignMatchesTheRationalSum) {
   std::mt19937_64 rng(31);
-  int zeros = 0, residues = 0;
+  int nonzero_random = 0, residues = 0;
   for (const double scale : {1.0, 0x1p-30, 0x1p40, 0x1p-1000, 3.0e-310, 0x1p600}) {
     for (int round = 0; round < 40; ++round) {
       std::vector<Term> terms;
       const int n = 1 + static_cast<int>(rng() % 50);
       for (int k = 0; k < n; ++k) terms.push_back(random_term(rng, scale));
-      EXPECT_EQ(computed_sign(terms), reference_sign(terms)) << "random, scale " << scale;
+      const int random_sign = reference_sign(terms);
+      EXPECT_EQ(computed_sign(terms), random_sign) << "random, scale " << scale;
+      nonzero_random += random_sign != 0;
       // Every term again, negated: exactly zero.
       std::vector<Term> cancelled = terms;
       for (Term t : terms) t.negate = !t.negate, cancelled.push_back(t);
       EXPECT_EQ(reference_sign(cancelled), 0);
       EXPECT_EQ(computed_sign(cancelled), 0) << "cancelling, scale " << scale;
-      ++zeros;
       // And one coordinate of one copy moved by an ulp, or a tiny tetrahedron added: a residue far
       // below the bound, of either sign.
       std::vector<Term> nudged = cancelled;
@@ -82,7 +83,7 @@ TEST(VolumeSum, SignMatchesTheRationalSum) {
     }
   }
   EXPECT_GT(residues, 100) << "the ulp moves should mostly leave a nonzero residue";
-  EXPECT_EQ(zeros, 240);
+  EXPECT_GT(nonzero_random, 200) << "random sums should be far from zero (the filter's case)";
   EXPECT_EQ(computed_sign({}), 0);
 }
 

@@ -4,16 +4,17 @@
 #include <bit>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
-#include "../cavity/delaunay_in_background.h"
 #include "../parallel.h"
 #include "../segment_interior.h"
 #include "../tuple_map.h"
 #include "delaunay3.h"
+#include "delaunay_in_background.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
 #include "spacing_grid.h"

@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "../steiner/delaunay3.h"
+#include "delaunay3.h"
 
 namespace sweepcdt::detail {
 
