@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cavity/cavity_cdt.h"
-#include "steiner/delaunay_in_background.h"
+#include "delaunay/in_background.h"
 #include "parallel.h"
 #include "gift_wrap.h"
 #include "regions.h"
@@ -112,15 +112,13 @@ Triangulation<D> finish(Triangulation<D> tri, const Plc<D>& plc, const Options& 
 template <int D>
 Triangulation<D> triangulate(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
                              const detail::DelaunayMesh* delaunay = nullptr) {
-  if constexpr (D == 3) {
-    if (options.algorithm == Algorithm::CavitySweep) {
-      stats.algorithm = Algorithm::CavitySweep;
-      if (std::optional<Triangulation<3>> tri = detail::cavity_cdt(plc, options, stats, delaunay)) {
-        try {
-          return finish(std::move(*tri), plc, options, stats, clock);
-        } catch (const NoCdtError&) {
-          // swept whole below
-        }
+  if (options.algorithm == Algorithm::CavitySweep) {
+    stats.algorithm = Algorithm::CavitySweep;
+    if (std::optional<Triangulation<D>> tri = detail::cavity_cdt<D>(plc, options, stats, delaunay)) {
+      try {
+        return finish(std::move(*tri), plc, options, stats, clock);
+      } catch (const NoCdtError&) {
+        // swept whole below
       }
     }
   }
@@ -247,14 +245,13 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   stats = {};
   Stopwatch clock;
   stats.check_recorded = plc.checked && plc.checked->covers(plc);
-  // The cavity sweep's Delaunay tetrahedralization beside a full check, given a second thread (with
-  // Steiner points, refinement computes its own as it goes).
-  std::optional<detail::DelaunayInBackground> delaunay;
-  if constexpr (D == 3)
-    if (options.algorithm == Algorithm::CavitySweep && options.steiner == SteinerMode::None && !stats.check_recorded &&
-        detail::thread_count(options.threads) > 1)
-      delaunay.emplace(plc.points);
-  // The tetrahedralization takes a thread of its own and the check the others: a check on every
+  // The cavity sweep's Delaunay triangulation beside a full check, given a second thread (with
+  // Steiner points, in 3D, refinement computes its own as it goes; D >= 4 has none).
+  const bool refines = D == 3 && options.steiner == SteinerMode::Auto;
+  std::optional<detail::DelaunayInBackground<D>> delaunay;
+  if (options.algorithm == Algorithm::CavitySweep && !refines && !stats.check_recorded && detail::thread_count(options.threads) > 1)
+    delaunay.emplace(plc.points);
+  // The triangulation takes a thread of its own and the check the others: a check on every
   // thread competes with it for its core, and it is the longer of the two (1.3M triangles on 2
   // cores: a check on two threads took 2.1 s, then 1 s more of waiting; on one thread 2.4 s, then
   // about 0.5 s).

@@ -34,7 +34,7 @@ TEST(CliCdt, TwoDimensionalPolyWithHole) {
   // 8 points, a square hull: 10 triangles; the hole takes the diamond's 2.
   EXPECT_EQ(first_count(dir.path() / "d.ele"), 8u);
   EXPECT_EQ(first_count(dir.path() / "d.node"), 8u);
-  EXPECT_TRUE(r.says("2D, 8 triangles, checked (sweep-sphere,")) << r.out;
+  EXPECT_TRUE(r.says("2D, 8 triangles, checked (cavity-sweep,")) << r.out;  // the cavity sweep serves every D
 
   const CliRun s = run("cdt " + quoted(poly) + " -o " + quoted(dir.path() / "d.simplices") + " --algorithm giftwrap", dir);
   ASSERT_EQ(s.exit_code, 0) << s.out;

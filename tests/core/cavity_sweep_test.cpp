@@ -10,6 +10,7 @@
 
 #include "cad_noise.h"
 #include "cavity/disturbed.h"
+#include "delaunay/delaunay.h"
 #include "simplex_interior.h"
 #include "integer_sphere.h"
 #include "random_plc.h"
@@ -21,13 +22,15 @@ using namespace sweepcdt;
 
 namespace {
 
+template <int D = 3>
 struct Run {
-  Triangulation<3> tri;
+  Triangulation<D> tri;
   CdtStatistics stats;
 };
 
-Run run(const Plc<3>& plc, Algorithm algorithm, Options options = {}) {
-  Run r;
+template <int D>
+Run<D> run(const Plc<D>& plc, Algorithm algorithm, Options options = {}) {
+  Run<D> r;
   options.algorithm = algorithm;
   options.statistics = &r.stats;
   r.tri = cdt(plc, options);
@@ -35,46 +38,130 @@ Run run(const Plc<3>& plc, Algorithm algorithm, Options options = {}) {
 }
 
 // The cavity sweep equals the sweep sphere on `plc` and decided it itself; returns its statistics.
-CdtStatistics expect_same_as_sweep(const Plc<3>& plc, const std::string& what, const Options& options = {}) {
-  const Run sphere = run(plc, Algorithm::SweepSphere, options);
-  const Run cavity = run(plc, Algorithm::CavitySweep, options);
+template <int D>
+CdtStatistics expect_same_as_sweep(const Plc<D>& plc, const std::string& what, const Options& options = {}) {
+  const Run<D> sphere = run(plc, Algorithm::SweepSphere, options);
+  const Run<D> cavity = run(plc, Algorithm::CavitySweep, options);
   EXPECT_EQ(fixtures::simplex_set(cavity.tri), fixtures::simplex_set(sphere.tri)) << what;
   EXPECT_EQ(cavity.tri.points, sphere.tri.points) << what;
   EXPECT_EQ(cavity.stats.algorithm, Algorithm::CavitySweep) << what << ": the whole PLC was swept";
   return cavity.stats;
 }
 
-// Random constraints among grid points inside their convex hull (degenerate everywhere), the hull
-// a far box: where the sweep finds a CDT, the cavity sweep finds the same one by itself; where it
-// finds none, neither does the cavity sweep. (A cavity that reaches the convex hull is swept whole,
-// cavity_plc.h: the far box keeps them inside.)
+// A far box around `plc`: cavities then stay inside the convex hull (a cavity that reaches the hull
+// is swept whole, cavity_plc.h). `skew` moves each corner a little, so that they are not cospherical.
+template <int D>
+void add_far_box(Plc<D>& plc, double skew = 0) {
+  for (int corner = 0; corner < 1 << D; ++corner)
+    for (int k = 0; k < D; ++k)
+      plc.points.push_back((corner >> (D - 1 - k) & 1 ? 24.0 + k : -20.0 - k) + skew * ((corner * 7 + k * 3) % 11));
+}
+
+// Whether the sorted ids `face` are a face of one of `simplices`.
+template <int D>
+bool is_face(const std::vector<std::array<uint32_t, D + 1>>& simplices, const std::vector<uint32_t>& face) {
+  for (std::array<uint32_t, D + 1> s : simplices) {
+    std::sort(s.begin(), s.end());
+    if (std::includes(s.begin(), s.end(), face.begin(), face.end())) return true;
+  }
+  return false;
+}
+
+// Random points in the unit cube inside a far box, one facet f of their Delaunay triangulation (among
+// the random points) as the constraint, and a point p near f's centroid, just off f, such that f is no
+// Delaunay face any more but each of its ridges still is. In general position a Delaunay face is
+// strongly Delaunay, so by the CDT theorem (paper §1) the PLC has a CDT, and the cavity sweep has a
+// cavity to fill.
+template <int D>
+Plc<D> facet_with_a_point_beside_it(std::mt19937_64& rng, int points) {
+  Plc<D> base;
+  add_far_box(base, 0.1);
+  const uint32_t first = static_cast<uint32_t>(base.num_points());
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < D * points; ++i) base.points.push_back(u(rng));
+  const auto simplices = detail::delaunay_simplices<D>(base.points);
+  std::uniform_int_distribution<std::size_t> pick(0, simplices.size() - 1);
+  for (;;) {
+    const auto& s = simplices[pick(rng)];
+    if (*std::min_element(s.begin(), s.end()) < first) continue;  // a simplex of the random points only
+    Plc<D> plc = base;
+    std::vector<uint32_t> facet(s.begin(), s.begin() + D);
+    std::sort(facet.begin(), facet.end());
+    std::array<double, D> centre{};
+    for (const uint32_t v : facet) {
+      plc.simplices.push_back(v);
+      for (int j = 0; j < D; ++j) centre[j] += plc.point(v)[j] / D;
+    }
+    for (int j = 0; j < D; ++j) plc.points.push_back(centre[j] + 0.02 * (u(rng) - 0.5));
+    const auto after = detail::delaunay_simplices<D>(plc.points);
+    if (is_face<D>(after, facet)) continue;
+    bool ridges_stay = true;
+    for (int k = 0; k < D && ridges_stay; ++k) {
+      std::vector<uint32_t> ridge = facet;
+      ridge.erase(ridge.begin() + k);
+      ridges_stay = is_face<D>(after, ridge);
+    }
+    if (ridges_stay) return plc;
+  }
+}
+
+// Where the sweep finds a CDT of `plc`, the cavity sweep finds the same one by itself; where it finds
+// none, neither does the cavity sweep. Counts into `tally`: {with a CDT, with missing constraints,
+// without a CDT}.
+template <int D>
+void expect_cavity_sweep_agrees(const Plc<D>& plc, const std::string& what, std::array<int, 3>& tally) {
+  bool sweep_found = true;
+  try {
+    run(plc, Algorithm::SweepSphere);
+  } catch (const NoCdtError&) {
+    sweep_found = false;
+  }
+  if (!sweep_found) {
+    EXPECT_THROW(run(plc, Algorithm::CavitySweep), NoCdtError) << what;
+    ++tally[2];
+    return;
+  }
+  const CdtStatistics stats = expect_same_as_sweep(plc, what);
+  ++tally[0];
+  tally[1] += stats.missing_constraints > 0;
+}
+
+// Random constraints among grid points inside their convex hull (degenerate everywhere), the hull a
+// far box.
 TEST(CavitySweep, RandomConstraintsInTheConvexHull) {
-  int with_cdt = 0, with_cavities = 0, without_cdt = 0;
+  std::array<int, 3> tally{};
   for (uint64_t seed = 0; seed < 500; ++seed) {
     std::mt19937_64 rng(seed);
     Plc<3> plc = fixtures::random_constrained_plc<3>(rng, 5, 8, 1 + seed % 2);
-    for (const double x : {-20.0, 24.0})
-      for (const double y : {-21.0, 25.0})
-        for (const double z : {-22.0, 26.0}) plc.points.insert(plc.points.end(), {x, y, z});
-    const std::string what = "seed " + std::to_string(seed);
-    bool sweep_found = true;
-    try {
-      run(plc, Algorithm::SweepSphere);
-    } catch (const NoCdtError&) {
-      sweep_found = false;
-    }
-    if (!sweep_found) {
-      EXPECT_THROW(run(plc, Algorithm::CavitySweep), NoCdtError) << what;
-      ++without_cdt;
-      continue;
-    }
-    const CdtStatistics stats = expect_same_as_sweep(plc, what);
-    ++with_cdt;
-    with_cavities += stats.missing_constraints > 0;
+    add_far_box(plc);
+    expect_cavity_sweep_agrees(plc, "seed " + std::to_string(seed), tally);
   }
-  EXPECT_GE(with_cavities, 10) << "few PLCs had a constraint missing from the Delaunay tetrahedralization";
-  EXPECT_GE(without_cdt, 1) << "NoCdtError was never checked";
-  std::printf("  %d PLCs with a CDT (%d with missing constraints), %d without\n", with_cdt, with_cavities, without_cdt);
+  EXPECT_GE(tally[1], 10) << "few PLCs had a constraint missing from the Delaunay tetrahedralization";
+  EXPECT_GE(tally[2], 1) << "NoCdtError was never checked";
+  std::printf("  %d PLCs with a CDT (%d with missing constraints), %d without\n", tally[0], tally[1], tally[2]);
+}
+
+// The same in 2D on grid points (every PSLG has a CDT). In 4D and 5D random constraints among a few
+// points mostly have no CDT, and one that has is mostly a Delaunay face: there the constraint is a
+// Delaunay facet made missing by a point beside it, which has a CDT (facet_with_a_point_beside_it).
+TEST(CavitySweep, RandomConstraintsInOtherDimensions) {
+  std::array<int, 3> tally2{}, tally4{}, tally5{};
+  for (uint64_t seed = 0; seed < 300; ++seed) {
+    std::mt19937_64 rng(seed);
+    Plc<2> plc = fixtures::random_constrained_plc<2>(rng, 6, 6, 1 + seed % 3);
+    add_far_box(plc);
+    expect_cavity_sweep_agrees(plc, "2D seed " + std::to_string(seed), tally2);
+  }
+  constexpr int kSeeds = 12;
+  for (uint64_t seed = 0; seed < kSeeds; ++seed) {
+    std::mt19937_64 rng(seed);
+    expect_cavity_sweep_agrees(facet_with_a_point_beside_it<4>(rng, 12), "4D seed " + std::to_string(seed), tally4);
+    expect_cavity_sweep_agrees(facet_with_a_point_beside_it<5>(rng, 12), "5D seed " + std::to_string(seed), tally5);
+  }
+  EXPECT_EQ(tally2[2], 0);
+  EXPECT_GE(tally2[1], 10) << "few PLCs had a constraint missing from the Delaunay triangulation";
+  for (const auto* tally : {&tally4, &tally5}) EXPECT_EQ(*tally, (std::array<int, 3>{kSeeds, kSeeds, 0}));
+  std::printf("  2D: %d PLCs with a CDT (%d with missing constraints)\n", tally2[0], tally2[1]);
 }
 
 // Two constraining triangles ABC and ACD in the plane z = 0 whose Delaunay diagonal is BD instead
@@ -86,16 +173,16 @@ TEST(CavitySweep, ConstraintsOverlappingDelaunayFacesInTheirPlaneDisturbThem) {
   Plc<3> plc;
   plc.points = {0, 0, 0, 2, 1, 0, 4, 0, 0, 2, -1, 0, 2, 0.2, 3, 1.9, -0.1, -3};
   plc.simplices = {0, 1, 2, 0, 2, 3};
-  const detail::DelaunayMesh dt = detail::delaunay_mesh(plc.points);
+  const detail::DelaunayMesh dt = detail::delaunay_mesh<3>(plc.points);
   ASSERT_EQ(dt.tets.size(), 16u) << "the bipyramid over ABD and BCD";
-  const detail::ConstraintFaces faces = detail::constraint_faces(plc, dt, 1);
+  const detail::ConstraintFaces faces = detail::constraint_faces<3>(plc, dt, 1);
   EXPECT_EQ(faces.missing, (std::vector<uint32_t>{0, 1}));
   for (std::size_t t = 0; t < 4; ++t)
     for (uint32_t c = 0; c < 2; ++c)
       EXPECT_FALSE((detail::interior_meets<3>({plc.point(dt.tets[4 * t]), plc.point(dt.tets[4 * t + 1]), plc.point(dt.tets[4 * t + 2]),
                                                plc.point(dt.tets[4 * t + 3])},
                                               {plc.point(plc.simplex(c)[0]), plc.point(plc.simplex(c)[1]), plc.point(plc.simplex(c)[2])})));
-  EXPECT_EQ(detail::disturbed_tetrahedra(plc, dt, faces.missing).tets, (std::vector<uint8_t>{1, 1, 1, 1}));
+  EXPECT_EQ(detail::disturbed_simplices<3>(plc, dt, faces.missing).tets, (std::vector<uint8_t>{1, 1, 1, 1}));
   EXPECT_THROW(run(plc, Algorithm::SweepSphere), NoCdtError);
   EXPECT_THROW(run(plc, Algorithm::CavitySweep), NoCdtError);
 }

@@ -13,7 +13,7 @@
 #include "cavity/disturbed.h"
 #include "edit/remove_steiner.h"
 #include "parallel.h"
-#include "steiner/delaunay3.h"
+#include "delaunay/delaunay.h"
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/stats.h"
 #include "test_shapes.h"
@@ -123,7 +123,7 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
 // it; the missing ones; the same on one thread and on several.
 TEST(Parallel, ConstraintFacesAsABruteForceLookupFindsThem) {
   const Plc<3> plc = comb(600);
-  const detail::DelaunayMesh dt = detail::delaunay_mesh(plc.points);
+  const detail::DelaunayMesh dt = detail::delaunay_mesh<3>(plc.points);
   const std::size_t tets = dt.tets.size() / 4;
   ASSERT_GT(detail::parts_for(tets, kMany), 1u);
   std::map<std::array<uint32_t, 3>, uint32_t> constraint;

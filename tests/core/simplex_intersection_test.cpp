@@ -1,5 +1,5 @@
-// The orientation-based intersection tests of D = 2, 3 against the exact linear program, on grid
-// inputs where touching, collinear and coplanar contacts are the rule.
+// The orientation-based intersection tests of D = 2, 3 (and the shortcuts of D = 4, 5) against the
+// exact linear program, on grid inputs where touching, collinear and coplanar contacts are the rule.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -32,11 +32,9 @@ void compare_with_lp(int grid, int cases, uint64_t seed) {
   while (tested < cases) {
     std::array<uint32_t, D> ia, ib;
     std::array<const double*, D> a, b;
+    for (int i = 0; i < D; ++i) ia[i] = pick(rng), a[i] = &points[D * ia[i]];
     for (int i = 0; i < D; ++i) {
-      ia[i] = pick(rng);
-      // Share vertices often.
-      ib[i] = (rng() % 3 == 0) ? ia[rng() % D] : pick(rng);
-      a[i] = &points[D * ia[i]];
+      ib[i] = (rng() % 3 == 0) ? ia[rng() % D] : pick(rng);  // share vertices often
       b[i] = &points[D * ib[i]];
     }
     auto sa = ia, sb = ib;
@@ -61,6 +59,9 @@ void compare_with_lp(int grid, int cases, uint64_t seed) {
 
 TEST(SimplexIntersection, Segments2DAgreeWithLp) { compare_with_lp<2>(4, 3000, 1); }
 TEST(SimplexIntersection, Triangles3DAgreeWithLp) { compare_with_lp<3>(3, 3000, 2); }
+// D >= 4: the shortcuts before the linear program (disjoint boxes, one side of a hyperplane).
+TEST(SimplexIntersection, Simplices4DAgreeWithLp) { compare_with_lp<4>(3, 1500, 3); }
+TEST(SimplexIntersection, Simplices5DAgreeWithLp) { compare_with_lp<5>(3, 800, 4); }
 
 TEST(SimplexIntersection, PointInSimplexMatchesLp4D) {
   const std::array<double, 16> f = {0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0};

@@ -233,7 +233,7 @@ Plc<3> edge_over_an_apex() {
 }  // namespace
 
 // A split point that rounds onto an existing point must not reach the Delaunay triangulation as a
-// duplicate (it did: "delaunay_tetrahedra: points coincide", an internal error): refine takes
+// duplicate (it did: "delaunay_tetrahedra: points coincide", now delaunay_simplices, an internal error): refine takes
 // another point of the segment, which `sweepcdt check` recognises as well.
 TEST(Steiner, SplitPointThatRoundsOntoAnotherPoint) {
   const Plc<3> plc = edge_over_an_apex();

@@ -79,7 +79,11 @@ Plc<D> radial_polytope(std::mt19937_64& rng, int count, int max_scale) {
       fresh = !std::equal(p.begin(), p.end(), directions.point(static_cast<uint32_t>(i)));
     if (fresh) directions.points.insert(directions.points.end(), p.begin(), p.end());
   }
-  const Triangulation<D> hull = cdt(directions);
+  // The polytope numbers its points, and draws their scales, in the order of the hull's simplices:
+  // the sweep sphere's, whatever the default algorithm is, so that the seeds keep their polytopes.
+  Options sphere;
+  sphere.algorithm = Algorithm::SweepSphere;
+  const Triangulation<D> hull = cdt(directions, sphere);
   Plc<D> plc;
   std::uniform_int_distribution<int> scale(1, max_scale);
   std::vector<uint32_t> used(directions.num_points(), kNone);

@@ -35,10 +35,10 @@ enum class Algorithm {
   SweepPlane,   // paper §3: SWEEPCDT with a sweep plane; facet-bounded domains (a convex hull
                 // domain is swept with the sphere instead, and the statistics say so)
   GiftWrap,     // paper §2: O(n_v n_f n_s); the reference the sweeps are tested against
-  CavitySweep,  // D = 3 (the default): the Delaunay tetrahedralization, its tetrahedra that a
-                // constraint meets other than in a common face triangulated again by the sweep
-                // sphere, cavity by cavity (core/src/cavity/cavity_cdt.h); the whole PLC swept with
-                // the sphere when that cannot decide, and for D != 3
+  CavitySweep,  // the default, any D: the Delaunay triangulation, its simplices that a constraint
+                // meets other than in a common face triangulated again by the sweep sphere, cavity
+                // by cavity (core/src/cavity/cavity_cdt.h); the whole PLC swept with the sphere when
+                // that cannot decide
 };
 
 const char* to_string(Algorithm algorithm);

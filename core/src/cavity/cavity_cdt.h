@@ -1,7 +1,8 @@
-// The CDT of a 3D PLC from the Delaunay triangulation of its points (Algorithm::CavitySweep; beyond
-// the paper, after the facet recovery by cavities of Shewchuk 2003 and Si 2008, with SWEEPCDT as the
-// cavity triangulator):
-//   1. the Delaunay triangulation of the points under the perturbation of paper §6 (delaunay3.h);
+// The CDT of a PLC from the Delaunay triangulation of its points (Algorithm::CavitySweep; beyond the
+// paper, after the facet recovery by cavities of Shewchuk 2003 and Si 2008, with SWEEPCDT as the
+// cavity triangulator). Said here for D = 3; the same in every dimension D = 2..5, with D-simplices
+// for tetrahedra and (D-1)-simplices for constraining triangles:
+//   1. the Delaunay triangulation of the points under the perturbation of paper §6 (delaunay.h);
 //   2. the tetrahedra disturbed by a constraint that is no Delaunay face (disturbed.h);
 //   3. the others placed inside or outside the domain by a flood fill across facets that are no
 //      constraint, from the hull and from the constraints' exterior notations (domain_sides.h);
@@ -21,19 +22,20 @@
 #pragma once
 #include <optional>
 
-#include "../steiner/delaunay3.h"
+#include "../delaunay/delaunay.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
 
 // The simplices of the CDT of a checked PLC and their neighbours (the caller validates them), or
-// nullopt when this path cannot tell: fewer than 4 affinely independent points, a convex hull domain
+// nullopt when this path cannot tell: fewer than D + 1 affinely independent points, a convex hull domain
 // whose cavities reach the hull (cavity_plc.h), no CDT found in a cavity (then the PLC has none, and
 // the whole sweep says so with its witness), or anything it did not expect. The caller then sweeps
 // the whole PLC. Throws CancelledError.
-// `delaunay`: the Delaunay tetrahedralization of plc.points when the caller has it (Steiner refinement
+// `delaunay`: the Delaunay triangulation of plc.points when the caller has it (Steiner refinement
 // keeps one), else it is computed.
-std::optional<Triangulation<3>> cavity_cdt(const Plc<3>& plc, const Options& options, CdtStatistics& stats,
+template <int D>
+std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
                                            const DelaunayMesh* delaunay = nullptr);
 
 }  // namespace sweepcdt::detail

@@ -5,7 +5,7 @@
 // triangles) and the segments are their boundary edges. Under the lifting-map perturbation of §6
 // the points are in general position for spheres, so "strongly Delaunay" becomes "an edge of the
 // perturbed Delaunay triangulation of all points". Rounds:
-//   1. the Delaunay triangulation of the current points (delaunay3.h: incremental, the same unique
+//   1. the Delaunay triangulation of the current points (delaunay.h: incremental, the same unique
 //      triangulation as the sweep sphere, kept between rounds; only segments near the new points
 //      are looked up again);
 //   2. every segment that is not one of its edges is split — at a power-of-two distance from its
@@ -44,7 +44,7 @@
 #include <optional>
 #include <vector>
 
-#include "delaunay3.h"
+#include "../delaunay/delaunay.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {

@@ -1,9 +1,9 @@
-// A Delaunay tetrahedralization computed on a helper thread while the calling thread does other work
+// A Delaunay triangulation computed on a helper thread while the calling thread does other work
 // that does not need it: cdt() checks the PLC meanwhile (the cavity sweep starts from the mesh), and
 // refinement groups the facets (steiner/refine.cpp starts from DelaunayEdges). On two cores the other
 // work then costs no time of its own. When the caller ends early (a PLC the check rejects, an error,
 // a cancel), the helper is told to stop and its work is thrown away. The triangulation is a pure
-// function of the points (delaunay3.h), so the result does not depend on this.
+// function of the points (delaunay.h), so the result does not depend on this.
 #pragma once
 #include <atomic>
 #include <chrono>
@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "delaunay3.h"
+#include "delaunay.h"
 
 namespace sweepcdt::detail {
 
@@ -82,11 +82,13 @@ class InBackground {
   std::thread thread_;  // last: starts once the members it uses exist
 };
 
-// The cavity sweep's: the mesh of `points` (which must outlive this object and not change).
+// The cavity sweep's: the mesh of `points` (n x D; they must outlive this object and not change).
+template <int D>
 class DelaunayInBackground : public InBackground<DelaunayMesh> {
  public:
   explicit DelaunayInBackground(const std::vector<double>& points)
-      : InBackground<DelaunayMesh>([&points](const Inserted& inserted) { return delaunay_mesh(points, inserted); }) {}
+      : InBackground<DelaunayMesh>(
+            [&points](const Inserted& inserted) { return delaunay_mesh<D>(points, inserted); }) {}
 };
 
 }  // namespace sweepcdt::detail

@@ -1,4 +1,4 @@
-// delaunay_tetrahedra (incremental Bowyer–Watson, core/src/steiner/delaunay3.h) against the sweep
+// delaunay_simplices<3> (incremental Bowyer–Watson, core/src/delaunay/delaunay.h) against the sweep
 // sphere's unconstrained Delaunay triangulation: identical tetrahedron sets under the §6 perturbation
 // on random points and on inputs full of cospherical and coplanar points (grids, spheres, points in
 // the planes of hull triangles, inside and outside their circumcircles), in several insertion orders.
@@ -11,7 +11,7 @@
 #include <random>
 #include <set>
 
-#include "steiner/delaunay3.h"
+#include "delaunay/delaunay.h"
 #include "sweep/sweep_cdt.h"
 #include "gift_wrap.h"
 #include "sweepcdt/error.h"
@@ -72,7 +72,7 @@ void expect_valid(const std::vector<double>& points, const std::vector<Tet>& tet
 // triangulation.
 void expect_same_as_sweep(const std::vector<double>& points, const std::string& what, int random_orders = 2) {
   const TetSet reference = sweep_delaunay(points);
-  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  const std::vector<Tet> tets = detail::delaunay_simplices<3>(points);
   expect_valid(points, tets, what);
   EXPECT_EQ(as_set(tets), reference) << what;
 
@@ -86,7 +86,7 @@ void expect_same_as_sweep(const std::vector<double>& points, const std::string& 
     orders.push_back(order);
   }
   for (std::size_t k = 0; k < orders.size(); ++k) {
-    const std::vector<Tet> again = detail::delaunay_tetrahedra_in_order(points, orders[k]);
+    const std::vector<Tet> again = detail::delaunay_simplices_in_order<3>(points, orders[k]);
     expect_valid(points, again, what + " order " + std::to_string(k));
     EXPECT_EQ(as_set(again), reference) << what << " order " << std::to_string(k);
   }
@@ -142,7 +142,7 @@ TEST(Delaunay3, RandomGridSubsets) {
     const int count = std::min(8 + static_cast<int>(seed % 30), (size + 1) * (size + 1) * (size + 1));
     const std::vector<double> points = fixtures::distinct_grid_points<3>(rng, count, size);
     if (all_coplanar(points)) {
-      EXPECT_THROW(detail::delaunay_tetrahedra(points), Error) << "seed " << seed;
+      EXPECT_THROW(detail::delaunay_simplices<3>(points), Error) << "seed " << seed;
       continue;
     }
     expect_same_as_sweep(points, "grid subset seed " + std::to_string(seed));
@@ -233,7 +233,7 @@ TEST(Delaunay3, PointsInHullFacePlanes) {
     for (uint32_t i = 0; i < n; ++i) order[i] = i;
     std::shuffle(order.begin() + 4, order.end(), rng);
     const TetSet reference = sweep_delaunay(points);
-    const std::vector<Tet> tets = detail::delaunay_tetrahedra_in_order(points, order);
+    const std::vector<Tet> tets = detail::delaunay_simplices_in_order<3>(points, order);
     expect_valid(points, tets, "face planes seed " + std::to_string(seed));
     EXPECT_EQ(as_set(tets), reference) << "face planes seed " << seed;
     // The same points with the ids reversed: the perturbation favours the other end.
@@ -247,21 +247,21 @@ TEST(Delaunay3, PointsInHullFacePlanes) {
 TEST(Delaunay3, HugeCoordinates) {
   std::vector<double> points = random_points(40, 99);
   for (double& x : points) x *= 1e308;
-  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  const std::vector<Tet> tets = detail::delaunay_simplices<3>(points);
   expect_valid(points, tets, "huge");
   EXPECT_EQ(as_set(tets), sweep_delaunay(points));
 }
 
 TEST(Delaunay3, Throws) {
-  EXPECT_THROW(detail::delaunay_tetrahedra({}), Error);
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 5, 7, 0}), Error);  // flat
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}), Error);           // collinear
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0}), Error);  // duplicate
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2}), Error);
-  EXPECT_THROW(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);  // not n x 3
-  EXPECT_THROW(detail::delaunay_tetrahedra_in_order({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 2}), Error);
-  EXPECT_EQ(detail::delaunay_tetrahedra({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}).size(), 1u);
+  EXPECT_THROW(detail::delaunay_simplices<3>({}), Error);
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 5, 7, 0}), Error);  // flat
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}), Error);           // collinear
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0}), Error);  // duplicate
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2}), Error);
+  EXPECT_THROW(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}), Error);  // not n x 3
+  EXPECT_THROW(detail::delaunay_simplices_in_order<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 2}), Error);
+  EXPECT_EQ(detail::delaunay_simplices<3>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}).size(), 1u);
 }
 
 // DelaunayEdges (kept between Steiner rounds): after each batch of appended points, has_edge agrees
@@ -271,7 +271,7 @@ TEST(Delaunay3, Throws) {
 // only there. Random and grid points (ties decided by the perturbation).
 std::set<std::pair<uint32_t, uint32_t>> edges_of(const std::vector<double>& points) {
   std::set<std::pair<uint32_t, uint32_t>> edges;
-  for (const Tet& t : detail::delaunay_tetrahedra(points))
+  for (const Tet& t : detail::delaunay_simplices<3>(points))
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) edges.insert(std::minmax(t[i], t[j]));
   return edges;
@@ -325,7 +325,7 @@ TEST(Delaunay3, EdgesKeptUpToDateAsPointsAreAdded) {
 TEST(Delaunay3, Large33kAgainstSweep) {
   const std::vector<double> points = random_points(33000, 2024);
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Tet> tets = detail::delaunay_tetrahedra(points);
+  const std::vector<Tet> tets = detail::delaunay_simplices<3>(points);
   const auto t1 = std::chrono::steady_clock::now();
   const TetSet reference = sweep_delaunay(points);
   const auto t2 = std::chrono::steady_clock::now();

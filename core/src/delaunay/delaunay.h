@@ -1,18 +1,20 @@
-// Incremental 3D Delaunay triangulation (Bowyer–Watson) under the lifting-map perturbation of paper
-// §6: the same unique triangulation the sweep sphere builds for a point set without constraints, but
-// in O(n log n) expected time. Steiner refinement (refine.cpp) needs it once per round.
+// Incremental Delaunay triangulation (Bowyer–Watson) in dimension D = 2..5 under the lifting-map
+// perturbation of paper §6: the same unique triangulation the sweep sphere builds for a point set
+// without constraints, but in O(n log n) expected time (for points spread evenly). The cavity sweep
+// (cavity/cavity_cdt.h) starts from it in every dimension; Steiner refinement (steiner/refine.cpp)
+// keeps the 3D one between its rounds (DelaunayEdges).
 //
-// Every geometric decision is an exact predicate (predicates::orient<3>, insphere_perturbed<3>);
+// Every geometric decision is an exact predicate (predicates::orient<D>, insphere_perturbed<D>);
 // floating point only chooses the insertion order (a BRIO of Hilbert-sorted rounds) and the walk's
 // random face order, neither of which can change the result: the perturbed Delaunay triangulation
 // is unique.
 //
-// The convex hull is handled with an infinite vertex: every hull triangle abc carries a ghost
-// tetrahedron (a, b, c, oo). A new point p conflicts with it when p lies strictly outside abc, or in
-// the plane of abc and inside the perturbed circumcircle of abc. The latter is decided as the
-// insphere test of the finite tetrahedron abcd behind abc (see facet_flips.h: d's cofactor is
-// orient(a, b, c, p) = 0, so d is never the decisive vertex of the perturbation), which makes the
-// ghost and its finite neighbour agree for coplanar p, so no flat tetrahedron is ever created.
+// The convex hull is handled with an infinite vertex: every hull facet f carries a ghost simplex
+// (f, oo). A new point p conflicts with it when p lies strictly outside f, or in the hyperplane of f
+// and inside the perturbed circumsphere of f within it. The latter is decided as the insphere test of
+// the finite simplex s behind f (see facet_flips.h: the cofactor of s's vertex off f is orient(f, p)
+// = 0, so that vertex is never the decisive one of the perturbation), which makes the ghost and its
+// finite neighbour agree for p in the hyperplane, so no flat simplex is ever created.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -22,29 +24,33 @@
 
 namespace sweepcdt::detail {
 
-// Tetrahedra (4 point ids each, positively oriented: predicates::orient<3> > 0) of the perturbed
-// Delaunay triangulation of the points (n x 3 doubles), covering their convex hull.
-// Requires at least 4 affinely independent points; throws sweepcdt::Error otherwise, and for
+// Simplices (D + 1 point ids each, positively oriented: predicates::orient<D> > 0) of the perturbed
+// Delaunay triangulation of the points (n x D doubles), covering their convex hull.
+// Requires at least D + 1 affinely independent points; throws sweepcdt::Error otherwise, and for
 // duplicate or non-finite points.
-std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra(const std::vector<double>& points);
+template <int D>
+std::vector<std::array<uint32_t, D + 1>> delaunay_simplices(const std::vector<double>& points);
 
 // The same triangulation with its adjacency, in Triangulation's encoding (sweepcdt/triangulation.h):
-// `tets` 4 point ids per tetrahedron, positively oriented; `neighbors` per facet i of tetrahedron t
-// (opposite t's vertex i) 4 * u + j, facet j of tetrahedron u, or kNone on the convex hull.
+// `tets` D + 1 point ids per simplex, positively oriented; `neighbors` per facet i of simplex t
+// (opposite t's vertex i) (D + 1) u + j, facet j of simplex u, or kNone on the convex hull.
+// (The name says tetrahedra: D = 3 is the common case.)
 // `inserted`, when given, is called with the number of points inserted so far every 1024 insertions;
 // it may throw (to cancel).
 struct DelaunayMesh {
   std::vector<uint32_t> tets;
   std::vector<uint32_t> neighbors;
 };
+template <int D>
 DelaunayMesh delaunay_mesh(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
 
 // The same triangulation, inserting the points in the given order (a permutation of 0..n-1) instead
 // of the spatial order. For tests: the result must not depend on the order.
-std::vector<std::array<uint32_t, 4>> delaunay_tetrahedra_in_order(const std::vector<double>& points,
-                                                                  const std::vector<uint32_t>& order);
+template <int D>
+std::vector<std::array<uint32_t, D + 1>> delaunay_simplices_in_order(const std::vector<double>& points,
+                                                                     const std::vector<uint32_t>& order);
 
-// The same triangulation kept between Steiner rounds: points appended to the caller's vector are
+// The 3D triangulation kept between Steiner rounds: points appended to the caller's vector are
 // inserted, and edges looked up, without rebuilding it (refine.cpp asks once per segment per round).
 class DelaunayEdges {
  public:
