@@ -1,5 +1,6 @@
 // orient and insphere for D = 1..5: generic formulas through filtered_sign(), and hand-written 3D
-// and 4D filters (filters3.h, filters4.h: the hot paths of the sweeps) with bounds derived as in approx.h.
+// and 4D filters (filters3.h, filters4.h: the hot paths of the sweeps) with bounds derived as in
+// approx.h; in D = 5 a semi-static filter first (filters_dd.h).
 #include "sweepcdt/predicates/orientation.h"
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 
 #include "arith.h"
 #include "filters4.h"  // and filters3.h
+#include "filters_dd.h"
 #include "orient_small.h"
 
 namespace sweepcdt::predicates {
@@ -168,6 +170,14 @@ template <int D, std::size_t N, class Formula>
   return detail::exact_sign(formula);
 }
 
+// D >= 5, after the semi-static filter (filters_dd.h): two equal points, else the generic filter,
+// whose bound is tighter, else the exact stage.
+template <int D, std::size_t N, class Formula>
+[[gnu::noinline]] Sign generic_sign(const std::array<const double*, N>& p, const Formula& formula) {
+  if (has_equal_points(p, D)) return detail::count_filtered(), Sign::Zero;
+  return detail::filtered_sign(formula);
+}
+
 // The sign a hand-written filter's estimate certifies (filters3.h, filters4.h), else exact().
 template <class Exact>
 inline Sign certified_or(const detail::Estimate& e, Exact&& exact) {
@@ -183,14 +193,14 @@ Sign orient(const Coords<D + 1>& p) {
   if constexpr (D == 2) return orient2(p);
   else if constexpr (D == 3) return certified_or(detail::orient3_estimate(p), [&] { return orient3_exact(p); });
   else if constexpr (D == 4) return certified_or(detail::orient4_estimate(p), [&] { return exact_unless_repeated<4>(p, OrientFormula<4>{p}); });
-  else return has_equal_points(p, D) ? (detail::count_filtered(), Sign::Zero) : detail::filtered_sign(OrientFormula<D>{p});
+  else return certified_or(detail::orient_estimate_dd<D>(p), [&] { return generic_sign<D>(p, OrientFormula<D>{p}); });
 }
 
 template <int D>
 Sign insphere(const Coords<D + 2>& p) {
   if constexpr (D == 3) return certified_or(detail::insphere3_estimate(p), [&] { return insphere3_exact(p); });
   else if constexpr (D == 4) return certified_or(detail::insphere4_estimate(p), [&] { return exact_unless_repeated<4>(p, InsphereFormula<4>{p}); });
-  else return has_equal_points(p, D) ? (detail::count_filtered(), Sign::Zero) : detail::filtered_sign(InsphereFormula<D>{p});
+  else return certified_or(detail::insphere_estimate_dd<D>(p), [&] { return generic_sign<D>(p, InsphereFormula<D>{p}); });
 }
 
 template <int D>
