@@ -1,6 +1,6 @@
 // A semi-static floating-point filter for orient and insphere in D >= 5, where no hand-written one
 // exists (filters3.h, filters4.h): the determinant in doubles by the generic expansion (arith.h's
-// determinant<N> with T = double), and a bound computed from the matrix's column sums instead of
+// determinant<N>, as a flat table of steps), and a bound computed from the matrix's column sums instead of
 // carried through every operation as the generic filter (approx.h) does.
 //
 // Why the bound holds: approx.h bounds the error by gamma_k M, where k is the expansion's rounding
@@ -15,6 +15,8 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 #include "approx.h"
 #include "arith.h"
@@ -32,12 +34,64 @@ int determinant_rounds(const std::array<int, N>& column_rounds) {
   return determinant<N>(m).rounds;
 }
 
+// The steps of determinant<N>'s expansion as a flat table: for each row subset of two or more rows
+// (by size), its k x k minor over the first k columns is the signed sum, over its rows r, of entry
+// (r, k - 1) times the minor of the subset without r, in determinant<N>'s order of rows and of
+// operations (so its rounding depth is the same). Evaluating the table needs no bit tests or branches.
+struct ExpansionStep {
+  uint8_t entry;    // r N + k - 1
+  uint8_t minor;    // the subset without r
+  uint8_t target;   // the subset
+  uint8_t kind;     // 0: the first term, + ; 1: the first term, - ; 2: add ; 3: subtract
+};
+template <int N>
+constexpr std::array<ExpansionStep, N * (1u << (N - 1)) - N> expansion_steps() {
+  std::array<ExpansionStep, N * (1u << (N - 1)) - N> steps{};
+  constexpr auto subsets = subsets_by_size<N>();
+  std::size_t next = 0;
+  for (std::size_t m = N; m < subsets.size(); ++m) {
+    const unsigned mask = subsets[m].mask;
+    const int k = subsets[m].size;
+    int position = 0;
+    for (int r = 0; r < N; ++r) {
+      if (!((mask >> r) & 1u)) continue;
+      const bool negative = ((position + k - 1) & 1) != 0;
+      const uint8_t kind = position == 0 ? (negative ? 1 : 0) : (negative ? 3 : 2);
+      steps[next++] = {static_cast<uint8_t>(r * N + k - 1), static_cast<uint8_t>(mask & ~(1u << r)),
+                       static_cast<uint8_t>(mask), kind};
+      ++position;
+    }
+  }
+  return steps;
+}
+
+// determinant<N>(m) for doubles, the same operations in the same order (equal results), unrolled at
+// compile time: every step's indices and sign are constants.
+template <int N>
+double table_determinant(const std::array<double, N * N>& a) {
+  static constexpr auto steps = expansion_steps<N>();
+  std::array<double, (1u << N)> minor;
+  for (int r = 0; r < N; ++r) minor[1u << r] = a[r * N];
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    const auto step = [&]<std::size_t J>(std::integral_constant<std::size_t, J>) {
+      constexpr ExpansionStep s = steps[J];
+      const double term = a[s.entry] * minor[s.minor];
+      if constexpr (s.kind == 0) minor[s.target] = term;
+      else if constexpr (s.kind == 1) minor[s.target] = -term;
+      else if constexpr (s.kind == 2) minor[s.target] += term;
+      else minor[s.target] -= term;
+    };
+    (step(std::integral_constant<std::size_t, I>{}), ...);
+  }(std::make_index_sequence<steps.size()>{});
+  return minor[(1u << N) - 1];
+}
+
 template <int N>
 Estimate matrix_estimate(const std::array<double, N * N>& m, const std::array<double, N>& column_sums, int rounds,
                          double largest_difference) {
   double product = 1.0;
   for (const double s : column_sums) product *= s;
-  return {determinant<N>(m), error_bound(rounds, product * (1.0 + 0x1p-40), largest_difference)};
+  return {table_determinant<N>(m), error_bound(rounds, product * (1.0 + 0x1p-40), largest_difference)};
 }
 
 // det [p_i - p_D]_{i<D}, as orient_det (arith.h).
