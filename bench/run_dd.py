@@ -7,9 +7,10 @@ choice made among cospherical points (random points have none); the simplex coun
 show it. Medians of --repeat runs in one process each; prints a Markdown table.
 
 Usage: bench/run_dd.py [BUILD_DIR] [--repeat 3] [--sizes 1000,4000,16000] [--dimensions 4,5]
-       [--algorithms sweep-sphere]   (the sweep plane needs a facet-bounded domain: on points it is the sphere)
-The defaults take long in D = 5 (16000 points: minutes a run); the README's table ran
---dimensions 4, then --dimensions 5 --sizes 1000,4000 --repeat 1.
+       [--algorithms cavity-sweep,sweep-sphere]   (the default algorithm, and the whole-PLC sweep; the
+       sweep plane needs a facet-bounded domain: on points it is the sphere)
+The sweep sphere takes long in D = 5 (16000 points: minutes a run); the README's session 17 table ran
+--dimensions 4, then --dimensions 5 --sizes 1000,4000 --algorithms cavity-sweep.
 """
 import argparse
 import json
@@ -32,7 +33,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--sizes", default="1000,4000,16000")
     parser.add_argument("--dimensions", default="4,5")
-    parser.add_argument("--algorithms", default="sweep-sphere")
+    parser.add_argument("--algorithms", default="cavity-sweep,sweep-sphere")
     args = parser.parse_args()
     bench = os.path.join(args.build, "bench")
     cgal = os.path.join(bench, "cgal_delaunay_dd")
