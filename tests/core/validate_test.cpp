@@ -117,6 +117,28 @@ TEST(Validate, NonDelaunayDiagonalFailsUnlessConstrained) {
   EXPECT_EQ(validate(good, plc).count("constraints"), 1u);
 }
 
+// Two positively oriented simplices on the same side of their shared facet (they overlap): reported
+// as interior-facet-sides, in 2D and 3D, and in every vertex order of the second simplex that keeps
+// it positive (the side is decided from the permutation between the two vertex orders when
+// orientation() found the simplices positive, validate.cpp).
+TEST(Validate, SimplicesOnTheSameSideOfTheirFacet) {
+  const std::vector<double> square = {0, 0, 1, 0, 0, 1, 1, 1};
+  for (const std::vector<uint32_t>& second : {std::vector<uint32_t>{0, 1, 3}, {1, 3, 0}, {3, 0, 1}}) {
+    const auto overlapping = make<2>(square, {0, 1, 2, second[0], second[1], second[2]});
+    const auto report = validate(overlapping, points_only(overlapping), ValidationLevel::Topology);
+    EXPECT_EQ(report.count("interior-facet-sides"), 1u) << report.summary();
+    EXPECT_EQ(report.count("orientation"), 0u) << report.summary();
+  }
+  const auto apart = make<2>(square, {0, 1, 3, 0, 3, 2});
+  EXPECT_EQ(validate(apart, points_only(apart), ValidationLevel::Topology).count("interior-facet-sides"), 0u);
+  // 3D: the tetrahedra 1023 and 2104 (both positive) with 3 and 4 both above the triangle 012.
+  const std::vector<double> points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.2, 0.2, 1, 0.3, 0.1, 2};
+  const auto positive = make<3>(points, {1, 0, 2, 3, 2, 1, 0, 4});
+  const auto report = validate(positive, points_only(positive), ValidationLevel::Topology);
+  EXPECT_EQ(report.count("interior-facet-sides"), 1u) << report.summary();
+  EXPECT_EQ(report.count("orientation"), 0u) << report.summary();
+}
+
 // A square domain bounded by notated segments (counterclockwise: the inside is the positive side).
 Plc<2> notated_square() {
   Plc<2> plc;
