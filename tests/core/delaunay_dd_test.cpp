@@ -86,15 +86,7 @@ void expect_same_as_sweep(const std::vector<double>& points, const std::string& 
   expect_valid_mesh<D>(points, mesh, what);
   EXPECT_EQ(mesh.tets.size(), (D + 1) * reference.size()) << what;
 
-  const uint32_t n = static_cast<uint32_t>(points.size() / D);
-  std::vector<uint32_t> order(n);
-  for (uint32_t i = 0; i < n; ++i) order[i] = i;
-  std::vector<std::vector<uint32_t>> orders{order, std::vector<uint32_t>(order.rbegin(), order.rend())};
-  std::mt19937_64 rng(n);
-  for (int k = 0; k < random_orders; ++k) {
-    std::shuffle(order.begin(), order.end(), rng);
-    orders.push_back(order);
-  }
+  const auto orders = fixtures::insertion_orders(static_cast<uint32_t>(points.size() / D), random_orders);
   for (std::size_t k = 0; k < orders.size(); ++k)
     EXPECT_EQ(as_set<D>(detail::delaunay_simplices_in_order<D>(points, orders[k])), reference) << what << " order " << k;
 }

@@ -76,15 +76,7 @@ void expect_same_as_sweep(const std::vector<double>& points, const std::string& 
   expect_valid(points, tets, what);
   EXPECT_EQ(as_set(tets), reference) << what;
 
-  const uint32_t n = static_cast<uint32_t>(points.size() / 3);
-  std::vector<uint32_t> order(n);
-  for (uint32_t i = 0; i < n; ++i) order[i] = i;
-  std::vector<std::vector<uint32_t>> orders{order, std::vector<uint32_t>(order.rbegin(), order.rend())};
-  std::mt19937_64 rng(n);
-  for (int k = 0; k < random_orders; ++k) {
-    std::shuffle(order.begin(), order.end(), rng);
-    orders.push_back(order);
-  }
+  const auto orders = fixtures::insertion_orders(static_cast<uint32_t>(points.size() / 3), random_orders);
   for (std::size_t k = 0; k < orders.size(); ++k) {
     const std::vector<Tet> again = detail::delaunay_simplices_in_order<3>(points, orders[k]);
     expect_valid(points, again, what + " order " + std::to_string(k));

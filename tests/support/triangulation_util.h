@@ -36,4 +36,18 @@ std::vector<double> distinct_grid_points(std::mt19937_64& rng, int count, int gr
   return points;
 }
 
+// Insertion orders of n points for tests whose result must not depend on the order: index order,
+// reverse order, and `random` shuffles (seeded by n, so reproducible).
+inline std::vector<std::vector<uint32_t>> insertion_orders(uint32_t n, int random) {
+  std::vector<uint32_t> order(n);
+  for (uint32_t i = 0; i < n; ++i) order[i] = i;
+  std::vector<std::vector<uint32_t>> orders{order, std::vector<uint32_t>(order.rbegin(), order.rend())};
+  std::mt19937_64 rng(n);
+  for (int k = 0; k < random; ++k) {
+    std::shuffle(order.begin(), order.end(), rng);
+    orders.push_back(order);
+  }
+  return orders;
+}
+
 }  // namespace sweepcdt::fixtures
