@@ -246,7 +246,7 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   Stopwatch clock;
   stats.check_recorded = plc.checked && plc.checked->covers(plc);
   // The cavity sweep's Delaunay triangulation beside a full check, given a second thread (with
-  // Steiner points, in 3D, refinement computes its own as it goes; D >= 4 has none).
+  // Steiner points, in 3D, refinement computes its own as it goes; other dimensions have none).
   const bool refines = D == 3 && options.steiner == SteinerMode::Auto;
   std::optional<detail::DelaunayInBackground<D>> delaunay;
   if (options.algorithm == Algorithm::CavitySweep && !refines && !stats.check_recorded && detail::thread_count(options.threads) > 1)
