@@ -18,6 +18,7 @@
 #include "facet_flips.h"
 #include "facet_groups.h"
 #include "spacing_grid.h"
+#include "triangle_pieces.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/steiner_point.h"
 
@@ -30,7 +31,7 @@ using predicates::Sign;
 // Limits that keep a hostile input from running away (the concentric-shell rule terminates, but the
 // number of points it needs grows with the ratio of the longest segment to the smallest gap). The
 // budget bounds the passes of a round (each adds a point; it looks up only the segments and
-// triangles near its changes, though it still copies the triangle list); the rounds, each a scan of
+// triangles near its changes); the rounds, each a scan of
 // the whole surface and a flip of its changed facets, have a limit of their own.
 constexpr uint64_t kMaxRounds = 200;
 std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points + 100000; }
@@ -50,6 +51,7 @@ class Refiner {
       split_until_delaunay();  // flips the facets as it goes
     else
       flip_facets();
+    pieces_.put_in_order();  // already: the rounds end in order
     r_.off_input = facets_off_input();
     r_.plc.points = std::move(points_);
     for (std::size_t t = 0; t < tris_.size(); ++t) {
@@ -105,6 +107,7 @@ class Refiner {
   void split_until_delaunay() {
     DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
+      pieces_.put_in_order();        // the last round's fold splits
       delaunay.insert_new_points();  // the Steiner points of the last round
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
@@ -117,6 +120,7 @@ class Refiner {
       }
       // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
       // rounding left in it when they are not Delaunay either (see folds_not_in).
+      pieces_.put_in_order();
       flip_facets();
       // Folds come from rounded Steiner points: without any, every facet is exactly flat.
       if (r_.steiner_on.empty()) {
@@ -453,50 +457,10 @@ class Refiner {
     return is_input(w) ? (w == ends[0] ? 0.0 : 1.0) : parameter_[w - r_.num_input_points];
   }
 
-  // Every triangle split along each of its split edges in turn, keeping its orientation and facet.
-  // A pass splits a few segments of a large surface: only a triangle with two ends of split edges
-  // among its vertices is looked up (a flag per point), the others are copied as they are.
+  // Every triangle split along each of its split edges in turn, keeping its orientation and facet
+  // (triangle_pieces.h: the new pieces in order only when put_in_order() is called).
   void split_triangles(const std::unordered_map<uint64_t, uint32_t>& new_point) {
-    std::vector<char> split_end(points_.size() / 3, 0);
-    for (const auto& [key, m] : new_point) split_end[key >> 32] = split_end[static_cast<uint32_t>(key)] = 1;
-    std::vector<Triangle> tris;
-    std::vector<uint32_t> original;
-    std::vector<char> unflipped;
-    tris.reserve(tris_.size() + 2 * new_point.size());
-    original.reserve(tris.capacity());
-    unflipped.reserve(tris.capacity());
-    std::vector<Triangle> work;
-    for (std::size_t j = 0; j < tris_.size(); ++j) {
-      if (split_end[tris_[j][0]] + split_end[tris_[j][1]] + split_end[tris_[j][2]] < 2) {
-        tris.push_back(tris_[j]);
-        original.push_back(original_[j]);
-        unflipped.push_back(unflipped_[j]);
-        continue;
-      }
-      work.assign(1, tris_[j]);
-      for (std::size_t w = 0; w < work.size(); ++w)
-        for (int i = 0; i < 3; ++i) {
-          const auto it = new_point.find(edge_key(work[w][i], work[w][(i + 1) % 3]));
-          if (it == new_point.end()) continue;
-          const uint32_t m = it->second;
-          uint32_t& on = r_.steiner_on[m - r_.num_input_points];
-          if (on == kNone) on = original_[j];
-          Triangle second = work[w];
-          work[w][(i + 1) % 3] = m;  // (a, m, c)
-          second[i] = m;             // (m, b, c)
-          work.push_back(second);
-          --w;  // look at the shrunken triangle again for its other split edges
-          break;
-        }
-      for (const Triangle& t : work) {
-        tris.push_back(t);
-        original.push_back(original_[j]);
-        unflipped.push_back(work.size() > 1 || unflipped_[j]);
-      }
-    }
-    tris_.swap(tris);
-    original_.swap(original);
-    unflipped_.swap(unflipped);
+    pieces_.split(new_point, points_.size() / 3, r_.steiner_on, r_.num_input_points);
   }
 
   const Options& options_;
@@ -510,6 +474,7 @@ class Refiner {
   std::vector<Triangle> tris_;
   std::vector<uint32_t> original_;  // per triangle: the input triangle it lies in
   std::vector<char> unflipped_;      // per triangle: new, or changed, since the facets' last flips
+  TrianglePieces pieces_{tris_, original_, unflipped_};  // splits them; in order after put_in_order()
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
