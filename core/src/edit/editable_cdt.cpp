@@ -129,12 +129,13 @@ struct EditableCdt<D>::Impl {
   }
 
   // The facets through v, each without v (the paper's recursion): indices into `through`.
-  std::vector<detail::Sheet<D>> sheets_through(uint32_t v, const std::vector<uint32_t>& through) const {
+  // Throws VertexRemovalError when v cannot go, or, given `refusal`, says why there.
+  std::vector<detail::Sheet<D>> sheets_through(uint32_t v, const std::vector<uint32_t>& through, std::string* refusal = nullptr) const {
     std::vector<Key> keys;
     for (uint32_t c : through) keys.push_back(constraints[c]);
     return detail::sheets_without<D>(
         v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); },
-        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; });
+        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; }, refusal);
   }
 
   void require_vertex(uint32_t v) const {
@@ -266,7 +267,13 @@ struct EditableCdt<D>::Impl {
     p.read_beyond = on_hull;
     // The facets through v, each without v (the paper's recursion).
     const std::vector<uint32_t> through = live_constraints_at(v);
-    const auto sheets = sheets_through(v, through);
+    std::string refusal;  // most refused Steiner points: reported without unwinding
+    const auto sheets = sheets_through(v, through, &refusal);
+    if (!refusal.empty()) {
+      p.error = std::make_exception_ptr(VertexRemovalError(refusal));
+      p.refused = true;
+      return;
+    }
 
     // The cavity as a PLC on the link's vertices, numbered in perturbation order.
     std::vector<uint32_t> ids;

@@ -37,6 +37,7 @@ class SheetBuilder {
                const std::function<uint32_t(uint32_t)>& order, const std::function<bool(uint32_t, uint32_t)>& same_facet)
       : v_(v), through_v_(through_v), point_(point), order_(order), same_facet_(same_facet) {}
 
+  // The sheets, or none with the reason in `refusal_` (v cannot be deleted).
   std::vector<Sheet<D>> run() {
     // Ridges through v (a constraint without one of its other vertices), each with a constraint on
     // it, sorted: the constraints on one ridge are neighbours.
@@ -61,9 +62,12 @@ class SheetBuilder {
     for (uint32_t root = 0; root < through_v_.size(); ++root)
       if (is_root[root]) sheet_of[root] = static_cast<uint32_t>(result.size()), result.emplace_back();
     for (uint32_t c = 0; c < through_v_.size(); ++c) result[sheet_of[sheets.find(c)]].constraints.push_back(c);
-    for (Sheet<D>& sheet : result) fill(sheet);
+    for (Sheet<D>& sheet : result)
+      if (!fill(sheet)) return {};
     return result;
   }
+
+  const std::optional<std::string>& refusal() const { return refusal_; }
 
  private:
   using Ridge = std::array<uint32_t, D - 1>;  // sorted
@@ -138,12 +142,16 @@ class SheetBuilder {
   Sign projected_orient(const Ridge& ids, uint32_t last, int axis) const { return projected_orient(ids.data(), last, axis); }
   Sign projected_orient(std::initializer_list<uint32_t> ids, uint32_t last, int axis) const { return projected_orient(ids.begin(), last, axis); }
 
-  [[noreturn]] void refuse(const Sheet<D>& sheet, const std::string& why) const {
-    throw VertexRemovalError("vertex " + std::to_string(v_) + " cannot be deleted: " + why + " (constraining simplex " +
-                             ids_text(through_v_[sheet.constraints.front()].data(), D) + ")");
+  // Records why v cannot be deleted; false. Most deletion attempts of Steiner points that stay end
+  // here (a point rounded off its segment is a corner of its facets), and unwinding an exception
+  // cost 6% of a jittered scan's run.
+  bool refuse(const Sheet<D>& sheet, const std::string& why) {
+    refusal_ = "vertex " + std::to_string(v_) + " cannot be deleted: " + why + " (constraining simplex " +
+               ids_text(through_v_[sheet.constraints.front()].data(), D) + ")";
+    return false;
   }
 
-  void fill(Sheet<D>& sheet) {
+  bool fill(Sheet<D>& sheet) {
     // Free ridges: on one simplex of the sheet — the sheet's boundary passes through v there.
     std::vector<Ridge> free, in_sheet;
     for (uint32_t c : sheet.constraints)
@@ -154,30 +162,31 @@ class SheetBuilder {
       n = 1;
       while (k + n < in_sheet.size() && in_sheet[k + n] == in_sheet[k]) ++n;
       if (n == 1) free.push_back(in_sheet[k]);
-      else if (constraints_on(in_sheet[k]) != 2) refuse(sheet, "more than two facets meet at a ridge through it");
+      else if (constraints_on(in_sheet[k]) != 2) return refuse(sheet, "more than two facets meet at a ridge through it");
     }
     if constexpr (D == 2) {
-      if (sheet.constraints.size() != 2) refuse(sheet, "it is an end of a constraining segment");
+      if (sheet.constraints.size() != 2) return refuse(sheet, "it is an end of a constraining segment");
       std::array<uint32_t, 2> ab;
       for (int j = 0; j < 2; ++j) {
         const auto& c = through_v_[sheet.constraints[j]];
         ab[j] = c[0] == v_ ? c[1] : c[0];
       }
       sheet.fill.push_back(orient_segment_like(ab, through_v_[sheet.constraints[0]]));  // runs the same way
+      return true;
     } else {
       std::optional<Ridge> closing;  // the straight edge through v that the sheet's boundary keeps
       if (!free.empty()) {
         if constexpr (D != 3) {
-          refuse(sheet, "it lies on the boundary of a facet (handled in D = 3 only)");
+          return refuse(sheet, "it lies on the boundary of a facet (handled in D = 3 only)");
         } else {
-          if (free.size() != 2) refuse(sheet, "it is a corner of a facet");
+          if (free.size() != 2) return refuse(sheet, "it is a corner of a facet");
           const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
           const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
-          if (!strictly_inside_segment<D>(point_(a), point_(v_), point_(b))) refuse(sheet, "it is a corner of a facet");
+          if (!strictly_inside_segment<D>(point_(a), point_(v_), point_(b))) return refuse(sheet, "it is a corner of a facet");
           closing = Ridge{std::min(a, b), std::max(a, b)};
         }
       }
-      triangulate(sheet, closing);
+      return triangulate(sheet, closing);
     }
   }
 
@@ -192,7 +201,7 @@ class SheetBuilder {
   }
 
   // The (D-1)-dimensional star CDT of the sheet's polytope without v, on its projection.
-  void triangulate(Sheet<D>& sheet, const std::optional<Ridge>& closing) {
+  bool triangulate(Sheet<D>& sheet, const std::optional<Ridge>& closing) {
     if constexpr (D > 2) {
       const uint32_t c0 = sheet.constraints.front();
       const int axis = projection_axis(c0);
@@ -216,10 +225,10 @@ class SheetBuilder {
           std::array<uint32_t, D> s{ids[0], ids[1], ids[2]};
           if (projected_orient({s[0], s[1]}, s[2], axis) != want) std::swap(s[0], s[1]);
           sheet.fill.push_back(s);
-          return;
+          return true;
         }
       if constexpr (D == 3)
-        if (ids.size() <= kMostEarClipped && triangulate_by_ears(sheet, boundary, v_, axis, want)) return;
+        if (ids.size() <= kMostEarClipped && triangulate_by_ears(sheet, boundary, v_, axis, want)) return true;
       std::map<uint32_t, uint32_t> local;
       Plc<D - 1> polytope;
       for (uint32_t x : ids) {
@@ -250,7 +259,7 @@ class SheetBuilder {
         compute_neighbors(tri);
         if (!validate(tri, polytope).ok()) throw NoCdtError("its star CDT fails validation", {});
       } catch (const NoCdtError& e) {
-        refuse(sheet, std::string("its facet has no CDT without it (") + e.what() + ")");
+        return refuse(sheet, std::string("its facet has no CDT without it (") + e.what() + ")");
       }
       for (std::size_t t = 0; t < tri.num_simplices(); ++t) {
         std::array<uint32_t, D> s;
@@ -260,6 +269,7 @@ class SheetBuilder {
       }
       if constexpr (D == 3) flip_to_in_plane_delaunay(sheet.fill, axis, want);
     }
+    return true;
   }
 
   // A hole of a few vertices (D = 3) is cut into ears along its boundary polygon (`boundary`: its
@@ -375,6 +385,7 @@ class SheetBuilder {
   const std::function<uint32_t(uint32_t)>& order_;
   const std::function<bool(uint32_t, uint32_t)>& same_facet_;
   std::vector<std::pair<Ridge, uint32_t>> ridges_;  // run()
+  std::optional<std::string> refusal_;
 };
 
 }  // namespace
@@ -383,15 +394,21 @@ template <int D>
 std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
                                      const std::function<const double*(uint32_t)>& point,
                                      const std::function<uint32_t(uint32_t)>& order,
-                                     const std::function<bool(uint32_t, uint32_t)>& same_facet) {
-  return SheetBuilder<D>(v, through_v, point, order, same_facet).run();
+                                     const std::function<bool(uint32_t, uint32_t)>& same_facet, std::string* refusal) {
+  SheetBuilder<D> builder(v, through_v, point, order, same_facet);
+  std::vector<Sheet<D>> sheets = builder.run();
+  if (builder.refusal()) {
+    if (!refusal) throw VertexRemovalError(*builder.refusal());
+    *refusal = *builder.refusal();
+  }
+  return sheets;
 }
 
 #define SWEEPCDT_INSTANTIATE(D)                                                                                       \
   template std::vector<Sheet<D>> sheets_without<D>(uint32_t, const std::vector<std::array<uint32_t, D>>&,                    \
                                                    const std::function<const double*(uint32_t)>&,                            \
                                                    const std::function<uint32_t(uint32_t)>&,                                 \
-                                                   const std::function<bool(uint32_t, uint32_t)>&);
+                                                   const std::function<bool(uint32_t, uint32_t)>&, std::string*);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)
