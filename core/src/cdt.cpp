@@ -138,8 +138,9 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       stats.steiner_rounds = refined.rounds;
       stats.facets = refined.facets;
       stats.facet_flips = refined.flips;
-      if (!plc.tags.empty())
-        for (auto& t : refined.original) t = plc.tags[t];
+      // Tagged with the input facet each triangle is a piece of while Steiner points are deleted
+      // (remove_steiner.h: pieces of one input facet around a point form one sheet), then with the
+      // input's own tags.
       refined.plc.tags = refined.original;
       // Rounding a split point can, rarely, put it on another facet (two within rounding of each
       // other): the input was valid, so that is no input error but a failure to find Steiner points.
@@ -167,6 +168,8 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
         stats.steiner_points = tri.steiner_on.size();
         stats.seconds_finish += clock.lap();
       }
+      if (!plc.tags.empty())
+        for (auto& t : refined.plc.tags) t = plc.tags[t];
       if (triangulated) *triangulated = std::move(refined.plc);
       return tri;
     }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <random>
@@ -15,10 +16,12 @@
 #include <thread>
 
 #include "brute_force_cdt.h"
+#include "cad_noise.h"
 #include "random_plc.h"
 #include "simplex_tiling.h"
 #include "star_shapes.h"
 #include "sweepcdt/editable_cdt.h"
+#include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/validate.h"
 #include "test_shapes.h"
 #include "triangulation_util.h"
@@ -374,6 +377,77 @@ TEST(EditableCdt, ObliqueFacetsStayDelaunayInTheirPlane) {
     ASSERT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(now.plc))) << "after deleting " << v;
   }
   EXPECT_GT(deleted, 20);
+}
+
+// Steiner points that rounding put a few ulps off their segment or facet are corners of the refined
+// PLC's bent facets: refused by default, deletable with unbend_facets_at_steiner_points() (what the
+// deletion pass of cdt() asks for). Thin fins with CAD noise, refined and kept whole; every Steiner
+// point is deleted in turn from two copies, one of each kind. The second must delete points the
+// first refuses as corners, and after each of its deletions the CDT must be the one cdt() builds
+// from scratch for the PLC left, its facets the input's pieces (each new triangle tagged with one
+// input triangle, on the same side as before).
+TEST(EditableCdt, SteinerPointsOffTheirSegmentGoWhenFacetsMayUnbend) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 4; ++fin) {
+    xs.push_back(xs.back() + 0.02);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  Options options = mesh_defaults();
+  options.remove_steiner_points = false;
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(fins, options, &refined);
+  ASSERT_GT(tri.steiner_on.size(), 50u);
+  ASSERT_EQ(refined.tags.size(), refined.num_simplices());  // the input triangle of each piece
+  EditableCdt<3> straight(refined, tri), unbending(refined, tri);
+  unbending.unbend_facets_at_steiner_points(1000);  // every star
+  int corners_deleted = 0, deleted = 0;
+  for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v) {
+    bool corner = false;
+    try {
+      straight.remove_vertex(v);
+    } catch (const VertexRemovalError&) {
+      corner = true;
+    } catch (const NoCdtError&) {
+    }
+    try {
+      unbending.remove_vertex(v);
+    } catch (const Error&) {
+      continue;
+    }
+    corners_deleted += corner;
+    if (++deleted % 8 != 0) continue;  // from scratch after every 8th (and, below, the last)
+    const auto now = unbending.snapshot();
+    ASSERT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(now.plc))) << "after deleting " << v;
+  }
+  const auto now = unbending.snapshot();
+  ASSERT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(now.plc)));
+  Triangulation<3> whole = now.triangulation;  // validated against the refined PLC, Steiner points as its own
+  whole.num_input_points = static_cast<uint32_t>(now.plc.num_points());
+  whole.steiner_on.clear();
+  const ValidationReport report = validate(whole, now.plc);
+  ASSERT_TRUE(report.ok()) << report.summary();
+  // Each piece turns like its input triangle in the projection along the largest component of the
+  // input's normal (what `sweepcdt check` tests: a piece folded over would fail it).
+  for (std::size_t j = 0; j < now.plc.num_simplices(); ++j) {
+    const auto* t = now.plc.simplex(j);
+    const auto* in = fins.simplex(now.plc.tags[j]);
+    const predicates::Coords<3> input{fins.point(in[0]), fins.point(in[1]), fins.point(in[2])};
+    double n[3];
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, l = (k + 2) % 3;
+      n[k] = (input[1][i] - input[0][i]) * (input[2][l] - input[0][l]) - (input[1][l] - input[0][l]) * (input[2][i] - input[0][i]);
+    }
+    const int drop = std::abs(n[0]) >= std::abs(n[1]) && std::abs(n[0]) >= std::abs(n[2]) ? 0 : std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2;
+    EXPECT_EQ(predicates::orient_projected<3>({now.plc.point(t[0]), now.plc.point(t[1]), now.plc.point(t[2])}, drop),
+              predicates::orient_projected<3>(input, drop))
+        << "piece " << j << " of input triangle " << now.plc.tags[j];
+  }
+  std::cout << "[ fins ] " << tri.steiner_on.size() << " Steiner points: " << deleted << " deleted, " << corners_deleted
+            << " of them corners of bent facets (refused without unbending)\n";
+  EXPECT_GT(corners_deleted, 10);
 }
 
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {

@@ -19,7 +19,10 @@
 //     neighbours along that edge (a Steiner point on a segment): the facet without v is then
 //     triangulated anew by the (D-1)-dimensional star CDT of the hole (the paper's recursion),
 //     computed on the facet's projection onto a coordinate hyperplane — exactly the facet's own
-//     CDT when the facet is parallel to that hyperplane, a valid triangulation of it otherwise.
+//     CDT when the facet is parallel to that hyperplane, a valid triangulation of it otherwise;
+//   - (D = 3, asked for by unbend_facets_at_steiner_points) a Steiner point of cdt() that rounding
+//     put off its segment or facet: a corner of facets bent by rounding, filled as if it had never
+//     been made.
 // Deleting a vertex can leave a PLC without a CDT (paper §5: the algorithm "may not behave in any
 // reasonable manner" then). Every deletion is checked exactly before it is applied — the new
 // simplices must tile the cavity (validate() of the cavity's CDT) and be locally Delaunay with
@@ -92,6 +95,20 @@ class EditableCdt {
   bool plan_is_current(const Removal& removal) const;
   // Commits so far that had to work their plan out again (for tests and measurements).
   uint64_t plans_redone() const;
+
+  // Steiner points of cdt() (Options::steiner) that rounding put a few ulps off their segment or
+  // facet are corners of the refined PLC's facets, so they cannot go by default. With this on (D =
+  // 3), and when the PLC's tags name the input facet each constraint is a piece of (cdt()'s refined
+  // PLC before it maps them to the input's own tags), such a Steiner point — an id from
+  // tri.num_input_points on — can: its facet's pieces around it are filled anew as if it had never
+  // been made (sheets.h), under the same exact checks. What is left is a PLC whose facets are the
+  // input's, split at the remaining points, as refinement would have made it without this point.
+  // Only while the point's star has at most `largest_star` simplices (0: off, the default): in
+  // facets bent by rounding the predicates are exact on nearly coplanar points, and a star merged
+  // from deleted neighbours costs many times a point's own (gearwheel_ascii.stl, whose flat face
+  // has z = ±5e-17 noise: 47396 Steiner points, all but 3801 deletable, in 113 s unbounded; 7189
+  // kept in 10 s at 32).
+  void unbend_facets_at_steiner_points(std::size_t largest_star);
 
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)

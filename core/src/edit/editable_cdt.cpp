@@ -51,6 +51,8 @@ struct EditableCdt<D>::Impl {
   std::vector<ExteriorSide> exterior;  // empty when the PLC has no notations
   std::vector<uint32_t> tags;          // one per constraint (all 0 when the PLC has none: has_tags)
   bool has_tags = false;
+  bool unbend = false;                 // unbend_facets_at_steiner_points()
+  std::size_t unbend_largest_star = 0;
   std::vector<char> constraint_alive;
   std::vector<std::vector<uint32_t>> constraints_at;  // per vertex (dead ones dropped lazily)
   std::unordered_map<Key, uint32_t, TupleHash> constraint_of;
@@ -133,9 +135,28 @@ struct EditableCdt<D>::Impl {
   std::vector<detail::Sheet<D>> sheets_through(uint32_t v, const std::vector<uint32_t>& through, std::string* refusal = nullptr) const {
     std::vector<Key> keys;
     for (uint32_t c : through) keys.push_back(constraints[c]);
+    // Tags then name input facets: an edge is on a facet's boundary when pieces of two hold it.
+    const detail::Unbend unbend_here{num_input_points, [&](uint32_t a, uint32_t b) {
+                                       uint32_t tag = kNone;
+                                       for (uint32_t c : constraints_at[a])
+                                         if (constraint_alive[c] && std::count(constraints[c].begin(), constraints[c].end(), b)) {
+                                           if (tag != kNone && tags[c] != tag) return true;
+                                           tag = tags[c];
+                                         }
+                                       return false;
+                                     }};
+    const bool unbending = D == 3 && unbend && has_tags && v >= num_input_points;
     return detail::sheets_without<D>(
         v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); },
-        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; }, refusal);
+        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; }, unbending ? &unbend_here : nullptr,
+        refusal);
+  }
+
+  // Why v's bent sheets may not be filled (unbend_facets_at_steiner_points: its star is too large), or "".
+  std::string star_too_large_to_unbend(uint32_t v, const std::vector<detail::Sheet<D>>& sheets, std::size_t star_size) const {
+    if (star_size <= unbend_largest_star || std::none_of(sheets.begin(), sheets.end(), [](const auto& s) { return s.bent; })) return {};
+    return "vertex " + std::to_string(v) + " cannot be deleted: its facets are bent by rounding and its star has " + std::to_string(star_size) +
+           " simplices (at most " + std::to_string(unbend_largest_star) + ")";
   }
 
   void require_vertex(uint32_t v) const {
@@ -269,6 +290,7 @@ struct EditableCdt<D>::Impl {
     const std::vector<uint32_t> through = live_constraints_at(v);
     std::string refusal;  // most refused Steiner points: reported without unwinding
     const auto sheets = sheets_through(v, through, &refusal);
+    if (refusal.empty()) refusal = star_too_large_to_unbend(v, sheets, star.size());
     if (!refusal.empty()) {
       p.error = std::make_exception_ptr(VertexRemovalError(refusal));
       p.refused = true;
@@ -729,7 +751,9 @@ struct EditableCdt<D>::Impl {
     for (uint32_t c = 0; c < constraints.size(); ++c)
       if (constraint_alive[c] && !std::count(through.begin(), through.end(), c))
         add(constraints[c], c < exterior.size() ? exterior[c] : ExteriorSide::None, tags[c]);
-    for (const auto& sheet : sheets_through(v, through)) {
+    const auto sheets = sheets_through(v, through);
+    if (const std::string why = star_too_large_to_unbend(v, sheets, star_of(v).size()); !why.empty()) throw VertexRemovalError(why);
+    for (const auto& sheet : sheets) {
       const uint32_t c0 = through[sheet.constraints.front()];
       for (const Key& s : sheet.fill) add(s, c0 < exterior.size() ? exterior[c0] : ExteriorSide::None, tags[c0]);
     }
@@ -844,6 +868,12 @@ template <int D>
 bool EditableCdt<D>::has_vertex(uint32_t v) const {
   return v < impl_->alive.size() && impl_->alive[v];
 }
+template <int D>
+void EditableCdt<D>::unbend_facets_at_steiner_points(std::size_t largest_star) {
+  impl_->unbend = largest_star > 0;
+  impl_->unbend_largest_star = largest_star;
+}
+
 template <int D>
 std::vector<uint32_t> EditableCdt<D>::neighbours(uint32_t v) const {
   impl_->require_vertex(v);

@@ -2,6 +2,7 @@
 #include "sheets.h"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <map>
 #include <numeric>
@@ -34,8 +35,8 @@ template <int D>
 class SheetBuilder {
  public:
   SheetBuilder(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v, const std::function<const double*(uint32_t)>& point,
-               const std::function<uint32_t(uint32_t)>& order, const std::function<bool(uint32_t, uint32_t)>& same_facet)
-      : v_(v), through_v_(through_v), point_(point), order_(order), same_facet_(same_facet) {}
+               const std::function<uint32_t(uint32_t)>& order, const std::function<bool(uint32_t, uint32_t)>& same_facet, const Unbend* unbend)
+      : v_(v), through_v_(through_v), point_(point), order_(order), same_facet_(same_facet), unbend_(unbend) {}
 
   // The sheets, or none with the reason in `refusal_` (v cannot be deleted).
   std::vector<Sheet<D>> run() {
@@ -50,7 +51,7 @@ class SheetBuilder {
       const std::size_t on = constraints_on(ridges_[k].first);
       if (on == 2) {
         const uint32_t a = ridges_[k].second, b = ridges_[k + 1].second;
-        if (same_facet_(a, b) && coplanar(a, b) && opposite(a, b, ridges_[k].first)) sheets.unite(a, b);
+        if (same_facet_(a, b) && (unbend_ || coplanar(a, b)) && opposite(a, b, ridges_[k].first)) sheets.unite(a, b);
       }
       k += on;
     }
@@ -62,8 +63,12 @@ class SheetBuilder {
     for (uint32_t root = 0; root < through_v_.size(); ++root)
       if (is_root[root]) sheet_of[root] = static_cast<uint32_t>(result.size()), result.emplace_back();
     for (uint32_t c = 0; c < through_v_.size(); ++c) result[sheet_of[sheets.find(c)]].constraints.push_back(c);
-    for (Sheet<D>& sheet : result)
+    for (Sheet<D>& sheet : result) {
+      if (unbend_)
+        for (uint32_t c : sheet.constraints)
+          if (!coplanar(sheet.constraints.front(), c)) sheet.bent = true;
       if (!fill(sheet)) return {};
+    }
     return result;
   }
 
@@ -182,12 +187,66 @@ class SheetBuilder {
           if (free.size() != 2) return refuse(sheet, "it is a corner of a facet");
           const uint32_t a = free[0][0] == v_ ? free[0][1] : free[0][0];
           const uint32_t b = free[1][0] == v_ ? free[1][1] : free[1][0];
-          if (!strictly_inside_segment<D>(point_(a), point_(v_), point_(b))) return refuse(sheet, "it is a corner of a facet");
+          if (!strictly_inside_segment<D>(point_(a), point_(v_), point_(b))) {
+            if (!unbend_) return refuse(sheet, "it is a corner of a facet");
+            sheet.bent = true;
+          }
           closing = Ridge{std::min(a, b), std::max(a, b)};
         }
       }
-      return triangulate(sheet, closing);
+      if (!triangulate(sheet, closing)) return false;
+      if (unbend_ && !keeps_its_side(sheet)) return refuse(sheet, "its facet, bent by rounding, would fold over without it");
+      return true;
     }
+  }
+
+  // A facet bent by rounding is filled in one projection (triangulate), where points nearly on one
+  // line turn by rounding. Two things must not come of it:
+  // - a triangle of a Steiner point and its two neighbours on its segment (both its sides at it on
+  //   the facet's boundary: an ear there is exactly flat in a flat facet and never cut): it lies
+  //   along the segment, on the other facet too, folded over;
+  // - a triangle facing the other way than the piece it replaces in another projection: `sweepcdt
+  //   check` would find its tetrahedron outside. So each must turn like that piece in every
+  //   projection where the piece is not thin — the axes of its normal's large components, which
+  //   include the one the check projects the input facet along (exact tests; the choice of axes
+  //   is only which tests to make).
+  bool keeps_its_side(const Sheet<D>& sheet) const {
+    if constexpr (D == 3) {
+      for (const auto& t : sheet.fill)
+        for (int i = 0; i < 3; ++i) {
+          const uint32_t x = t[(i + 2) % 3], s = t[i], y = t[(i + 1) % 3];
+          if (s >= unbend_->first_steiner && unbend_->ridge(x, s) && unbend_->ridge(s, y)) return false;
+        }
+      const auto& c0 = through_v_[sheet.constraints.front()];
+      const double n[3] = {normal_component(c0, 0), normal_component(c0, 1), normal_component(c0, 2)};
+      const double largest = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+      for (int k = 0; k < 3; ++k) {
+        if (std::abs(n[k]) < 0.5 * largest) continue;
+        const Sign want = projected_orient({c0[0], c0[1]}, c0[2], k);
+        if (want == Sign::Zero) continue;
+        for (const auto& t : sheet.fill)
+          if (projected_orient({t[0], t[1]}, t[2], k) != want) return false;
+      }
+    }
+    return true;
+  }
+  // The axis of the largest component of constraint c's normal (D = 3) along which it projects
+  // one-to-one (exactly); projection_axis() otherwise.
+  int dominant_axis(uint32_t c) const {
+    if constexpr (D == 3) {
+      const auto& t = through_v_[c];
+      int best = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::abs(normal_component(t, k)) > std::abs(normal_component(t, best))) best = k;
+      if (projected_orient(t.data(), t[D - 1], best) != Sign::Zero) return best;
+    }
+    return projection_axis(c);
+  }
+  // The normal's component along `axis` of the triangle c (D = 3), in floating point.
+  double normal_component(const std::array<uint32_t, D>& c, int axis) const {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const double *a = point_(c[0]), *b = point_(c[1]), *d = point_(c[2]);
+    return (b[i] - a[i]) * (d[j] - a[j]) - (b[j] - a[j]) * (d[i] - a[i]);
   }
 
   std::array<uint32_t, 2> orient_segment_like(std::array<uint32_t, 2> ab, const std::array<uint32_t, D>& c0) const {
@@ -204,7 +263,9 @@ class SheetBuilder {
   bool triangulate(Sheet<D>& sheet, const std::optional<Ridge>& closing) {
     if constexpr (D > 2) {
       const uint32_t c0 = sheet.constraints.front();
-      const int axis = projection_axis(c0);
+      // A sheet bent by rounding is projected along the largest component of its first piece's
+      // normal: an axis that only just keeps that piece one-to-one may fold the rest.
+      const int axis = unbend_ ? dominant_axis(c0) : projection_axis(c0);
       // The fill is oriented like c0 within the hyperplane: the same sign of the projected orientation.
       const Sign want = projected_orient(through_v_[c0].data(), through_v_[c0][D - 1], axis);
       std::vector<Ridge> boundary;
@@ -229,6 +290,15 @@ class SheetBuilder {
         }
       if constexpr (D == 3)
         if (ids.size() <= kMostEarClipped && triangulate_by_ears(sheet, boundary, v_, axis, want)) return true;
+      // A bent sheet's hole may fold in its projection: two of its points, or v and one of them,
+      // one point there — no polygon to fill (the sweep needs its edges to span lines).
+      if (unbend_) {
+        std::vector<std::array<double, D - 1>> projected{project(v_, axis)};
+        for (uint32_t x : ids) projected.push_back(project(x, axis));
+        std::sort(projected.begin(), projected.end());
+        if (std::adjacent_find(projected.begin(), projected.end()) != projected.end())
+          return refuse(sheet, "its facet, bent by rounding, folds over in projection without it");
+      }
       std::map<uint32_t, uint32_t> local;
       Plc<D - 1> polytope;
       for (uint32_t x : ids) {
@@ -366,6 +436,9 @@ class SheetBuilder {
         const int i1 = sides[k].apex, i2 = sides[k + 1].apex;
         ++k;
         const uint32_t x = fill[t1][(i1 + 1) % 3], y = fill[t1][(i1 + 2) % 3], p = fill[t1][i1], q = fill[t2][i2];
+        // (x, y, p, e) is a tetrahedron when the fill is flat; a facet bent by rounding (`unbend`)
+        // can have a triangle whose plane holds e: then that edge is not flipped.
+        if (unbend_ && predicates::orient<3>({point_(x), point_(y), point_(p), e}) == Sign::Zero) continue;
         if (!predicates::inside_circumsphere<3>({vertex(x), vertex(y), vertex(p), {e, kNone - 1}}, vertex(q))) continue;
         if (!oriented(x, q, p) || !oriented(y, p, q)) continue;  // not a convex quadrilateral
         fill[t1] = {x, q, p};
@@ -384,6 +457,7 @@ class SheetBuilder {
   const std::function<const double*(uint32_t)>& point_;
   const std::function<uint32_t(uint32_t)>& order_;
   const std::function<bool(uint32_t, uint32_t)>& same_facet_;
+  const Unbend* unbend_;  // sheets_without()'s
   std::vector<std::pair<Ridge, uint32_t>> ridges_;  // run()
   std::optional<std::string> refusal_;
 };
@@ -394,8 +468,8 @@ template <int D>
 std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
                                      const std::function<const double*(uint32_t)>& point,
                                      const std::function<uint32_t(uint32_t)>& order,
-                                     const std::function<bool(uint32_t, uint32_t)>& same_facet, std::string* refusal) {
-  SheetBuilder<D> builder(v, through_v, point, order, same_facet);
+                                     const std::function<bool(uint32_t, uint32_t)>& same_facet, const Unbend* unbend, std::string* refusal) {
+  SheetBuilder<D> builder(v, through_v, point, order, same_facet, unbend);
   std::vector<Sheet<D>> sheets = builder.run();
   if (builder.refusal()) {
     if (!refusal) throw VertexRemovalError(*builder.refusal());
@@ -408,7 +482,7 @@ std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<ui
   template std::vector<Sheet<D>> sheets_without<D>(uint32_t, const std::vector<std::array<uint32_t, D>>&,                    \
                                                    const std::function<const double*(uint32_t)>&,                            \
                                                    const std::function<uint32_t(uint32_t)>&,                                 \
-                                                   const std::function<bool(uint32_t, uint32_t)>&, std::string*);
+                                                   const std::function<bool(uint32_t, uint32_t)>&, const Unbend*, std::string*);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)
