@@ -387,14 +387,7 @@ TEST(EditableCdt, ObliqueFacetsStayDelaunayInTheirPlane) {
 // from scratch for the PLC left, its facets the input's pieces (each new triangle tagged with one
 // input triangle, on the same side as before).
 TEST(EditableCdt, SteinerPointsOffTheirSegmentGoWhenFacetsMayUnbend) {
-  std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < 4; ++fin) {
-    xs.push_back(xs.back() + 0.02);
-    tops.push_back(1.0);
-    xs.push_back(xs.back() + 0.2);
-    tops.push_back(0.2 + 0.01 * fin);
-  }
-  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  const Plc<3> fins = sweepcdt::testing::noisy_fins();
   Options options = mesh_defaults();
   options.remove_steiner_points = false;
   Plc<3> refined;

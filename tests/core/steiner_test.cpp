@@ -264,29 +264,13 @@ bool difference_is_exact(const double* u, const double* v) {
 
 }  // namespace
 
-namespace {
-
-// Four thin fins with CAD noise (a few ulps on half the coordinates).
-Plc<3> noisy_fins() {
-  std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < 4; ++fin) {
-    xs.push_back(xs.back() + 0.02);
-    tops.push_back(1.0);
-    xs.push_back(xs.back() + 0.2);
-    tops.push_back(0.2 + 0.01 * fin);
-  }
-  return sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
-}
-
-}  // namespace
-
 // A point on a segment whose ends differ exactly in double is a rounded split of those two input
 // ends however deep refinement splits the segment (sweepcdt/steiner_point.h), so `sweepcdt check`
 // needs no other Steiner point to recognise it and the deletion pass may delete any of them. On a
 // segment whose difference rounds, a point is a split of the two points of the piece it splits.
 // Thin fins with CAD noise (a few ulps) give both kinds, and folds.
 TEST(Steiner, PointsOnASegmentAreSplitsOfItsInputEnds) {
-  const Plc<3> fins = noisy_fins();
+  const Plc<3> fins = sweepcdt::testing::noisy_fins();
   const detail::RefinedPlc r = detail::refine(fins, mesh_defaults());
   const Plc<3>& refined = r.plc;
   const uint32_t n = r.num_input_points;
@@ -324,7 +308,7 @@ TEST(Steiner, PointsOnASegmentAreSplitsOfItsInputEnds) {
 // facets holding a Steiner point off its segment or inside them. So every triangle left out has all
 // its points exactly in its input facet's plane, and both checks accept the refined fins.
 TEST(Steiner, OnlyFacetsWithPointsOffThemAreCheckedAgain) {
-  const Plc<3> fins = noisy_fins();
+  const Plc<3> fins = sweepcdt::testing::noisy_fins();
   const detail::RefinedPlc r = detail::refine(fins, mesh_defaults());
   ASSERT_EQ(r.off_input.size(), r.plc.num_simplices());
   std::size_t trusted = 0;

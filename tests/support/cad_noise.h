@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdint>
 
+#include <vector>
+
 #include "sweepcdt/plc.h"
+#include "test_shapes.h"
 
 namespace sweepcdt::testing {
 
@@ -26,6 +29,19 @@ inline Plc<3> with_cad_noise(Plc<3> plc, double fraction, uint64_t seed) {
     x += x == 0 ? units * 5e-17 : units * (std::nextafter(std::abs(x), INFINITY) - std::abs(x));
   }
   return plc;
+}
+
+// Four thin fins (fixtures::extruded_columns) with CAD noise on half the coordinates: Steiner points
+// made from their segments' ends and from pieces, folds, points rounded off their segments.
+inline Plc<3> noisy_fins() {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 4; ++fin) {
+    xs.push_back(xs.back() + 0.02);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  return with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
 }
 
 }  // namespace sweepcdt::testing
