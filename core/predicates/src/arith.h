@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "approx.h"
+#include "dd_approx.h"
 #include "dyadic.h"
 #include "stats_counters.h"
 #include "wide_int.h"
@@ -169,15 +170,19 @@ Sign exact_sign(const Formula& formula) {
   const BitBound bound = formula(scan);
   if (scan.finite && scan.lowest_bit == std::numeric_limits<int>::max()) return Sign::Zero;  // all inputs 0
   const int input_bits = scan.highest_bit - scan.lowest_bit + 1;
-  if (scan.finite && input_bits <= 62) {  // non-finite input: the dyadic path reports it
-    const int value_bits = bound.degree * (input_bits + 1) + bound.extra;  // must stay below the sign bit
-    const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
-    if (value_bits < 2 * 64) return run(Int128Arith{scan.lowest_bit});  // |value| < 2^127
+  const bool narrow = scan.finite && input_bits <= 62;  // non-finite input: the dyadic path reports it
+  const int value_bits = narrow ? bound.degree * (input_bits + 1) + bound.extra : 0;  // must stay below the sign bit
+  const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
+  if (narrow && value_bits < 2 * 64) return run(Int128Arith{scan.lowest_bit});  // |value| < 2^127: cheap
+  // Wider: double-words first (dd_approx.h), which decide the signs that are tiny but not zero
+  // without multi-limb integers (exact zeros, as on an integer sphere, pay for both: so not above).
+  DDFilterArith dd;
+  if (const auto s = certain_sign(formula(dd))) return *s;
+  if (narrow) {
     if (value_bits < 4 * 64) return run(WideArith<4>{scan.lowest_bit});
     if (value_bits < 8 * 64) return run(WideArith<8>{scan.lowest_bit});
     if (value_bits < 12 * 64) return run(WideArith<12>{scan.lowest_bit});
   } else if (scan.finite) {  // a wide binary range: multi-limb inputs
-    const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
     switch (fixed_width_limbs(bound, input_bits)) {
       case 2: return run(ShiftedArith<2>{scan.lowest_bit});
       case 4: return run(ShiftedArith<4>{scan.lowest_bit});
