@@ -14,13 +14,12 @@ Usage: bench/make_noisy_inputs.py OUT_DIR [--build BUILD] [--more DIR]
 Then:  bench/compare_counts.sh SWEEPCDT_BEFORE SWEEPCDT_AFTER OUT_DIR/*.off
 """
 import argparse
-import math
 import os
 import random
 import struct
 import subprocess
 
-from run_cad import NOISY, ROOT
+from run_cad import NOISY, ROOT, rotation
 
 CAD = os.path.join(ROOT, "tests", "data", "cad")
 ROTATED = ["pipe_tee_std.stl", "flange_std.stl", "plate_with_holes_std.stl", "box_fused_sphere_fine.stl", "gear_fine.stl",
@@ -53,14 +52,8 @@ def write_off(path, points, triangles):
         f.writelines("3 %d %d %d\n" % tuple(t) for t in triangles)
 
 
-def turned(points, axis=(0.3, 0.5, 0.8), degrees=23):
-    n = math.sqrt(sum(a * a for a in axis))
-    x, y, z = (a / n for a in axis)
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    t = 1 - c
-    r = [[c + x * x * t, x * y * t - z * s, x * z * t + y * s],
-         [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
-         [z * x * t - y * s, z * y * t + x * s, c + z * z * t]]
+def turned(points):
+    r = rotation()  # as run_cad.py --rotated, in double precision
     return [[sum(r[row][k] * p[k] for k in range(3)) for row in range(3)] for p in points]
 
 

@@ -53,6 +53,17 @@ ROTATED = ["bracket_std.stl", "filleted_box_std.stl", "flange_std.stl", "flange_
            "hex_nut_fine.stl", "plate_with_holes_std.stl", "plate_with_holes_fine.stl", "two_bodies_fine.stl"]
 
 
+def rotation(degrees=23.0, axis=(0.3, 0.5, 0.8)):
+    """The matrix turning by `degrees` about `axis` (Rodrigues): a part placed at an angle."""
+    n = math.sqrt(sum(a * a for a in axis))
+    x, y, z = (a / n for a in axis)
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    t = 1 - c
+    return [[c + x * x * t, x * y * t - z * s, x * z * t + y * s],
+            [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
+            [z * x * t - y * s, z * y * t + x * s, c + z * z * t]]
+
+
 def rotated_stl(source, target, degrees=23.0, axis=(0.3, 0.5, 0.8)):
     """Binary STL `source` turned about `axis` through the origin, written as binary STL (float32)."""
     with open(source, "rb") as f:
@@ -60,13 +71,7 @@ def rotated_stl(source, target, degrees=23.0, axis=(0.3, 0.5, 0.8)):
     count = struct.unpack_from("<I", data, 80)[0]
     if len(data) != 84 + 50 * count:
         raise ValueError(f"{source}: not a binary STL")
-    n = math.sqrt(sum(a * a for a in axis))
-    x, y, z = (a / n for a in axis)
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    t = 1 - c
-    r = [[c + x * x * t, x * y * t - z * s, x * z * t + y * s],
-         [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
-         [z * x * t - y * s, z * y * t + x * s, c + z * z * t]]
+    r = rotation(degrees, axis)
     out = bytearray(data[:84])
     for i in range(count):
         v = struct.unpack_from("<12f", data, 84 + 50 * i)
