@@ -105,9 +105,8 @@ class EditableCdt {
   // input's, split at the remaining points, as refinement would have made it without this point.
   // Only while the point's star has at most `largest_star` simplices (0: off, the default): in
   // facets bent by rounding the predicates are exact on nearly coplanar points, and a star merged
-  // from deleted neighbours costs many times a point's own (gearwheel_ascii.stl, whose flat face
-  // has z = ±5e-17 noise: 47396 Steiner points, all but 3801 deletable, in 113 s unbounded; 7189
-  // kept in 10 s at 32).
+  // from deleted neighbours costs many times a point's own (cdt()'s deletion pass uses 32:
+  // core/src/edit/remove_steiner.h).
   void unbend_facets_at_steiner_points(std::size_t largest_star);
 
   bool has_vertex(uint32_t v) const;

@@ -72,7 +72,7 @@ struct DDFilterArith {
     DDApprox::two_sum(a, -b, d.hi, d.lo);
     const double m = std::fabs(d.hi);
     d.mag = m <= kMaxFilteredDifference ? m : INFINITY;  // NaN-safe, as approx_difference
-    d.rounds = 1;
+    d.rounds = 1;  // exact (TwoSum), counted as approx.h counts a rounded difference: only a looser bound
     return d;
   }
   static T one() { return {1.0, 0.0, 1.0, 0}; }

@@ -135,20 +135,21 @@ struct EditableCdt<D>::Impl {
   std::vector<detail::Sheet<D>> sheets_through(uint32_t v, const std::vector<uint32_t>& through, std::string* refusal = nullptr) const {
     std::vector<Key> keys;
     for (uint32_t c : through) keys.push_back(constraints[c]);
-    // Tags then name input facets: an edge is on a facet's boundary when pieces of two hold it.
-    const detail::Unbend unbend_here{num_input_points, [&](uint32_t a, uint32_t b) {
-                                       uint32_t tag = kNone;
-                                       for (uint32_t c : constraints_at[a])
-                                         if (constraint_alive[c] && std::count(constraints[c].begin(), constraints[c].end(), b)) {
-                                           if (tag != kNone && tags[c] != tag) return true;
-                                           tag = tags[c];
-                                         }
-                                       return false;
-                                     }};
-    const bool unbending = D == 3 && unbend && has_tags && v >= num_input_points;
+    // Unbending, tags name input facets: an edge is on a facet's boundary when pieces of two hold it.
+    std::optional<detail::Unbend> unbending;
+    if (D == 3 && unbend && has_tags && v >= num_input_points)
+      unbending = detail::Unbend{num_input_points, [&](uint32_t a, uint32_t b) {
+                                   uint32_t tag = kNone;
+                                   for (uint32_t c : constraints_at[a])
+                                     if (constraint_alive[c] && std::count(constraints[c].begin(), constraints[c].end(), b)) {
+                                       if (tag != kNone && tags[c] != tag) return true;
+                                       tag = tags[c];
+                                     }
+                                   return false;
+                                 }};
     return detail::sheets_without<D>(
         v, keys, [&](uint32_t x) { return point(x); }, [&](uint32_t x) { return order(x); },
-        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; }, unbending ? &unbend_here : nullptr,
+        [&](uint32_t a, uint32_t b) { return !has_tags || tags[through[a]] == tags[through[b]]; }, unbending ? &*unbending : nullptr,
         refusal);
   }
 

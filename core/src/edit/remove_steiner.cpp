@@ -31,9 +31,7 @@ uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::ve
                                const Options& options) {
   const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
   EditableCdt<3> mesh(std::move(plc), std::move(tri));
-  // plc's tags name input facets (cdt.cpp): points rounded off their segments may go too, in stars
-  // of up to 32 tetrahedra (a Steiner point's own star has 15-25).
-  mesh.unbend_facets_at_steiner_points(32);
+  mesh.unbend_facets_at_steiner_points(kLargestBentStar);  // plc's tags name input facets (cdt.cpp)
   // Per Steiner point: how many points made from it are still there; it is tried only at 0.
   std::vector<uint32_t> children(end - first, 0);
   for (const auto& pair : made_from)

@@ -6,6 +6,7 @@
 // `options.threads` threads and applied in list order: the result is one thread's.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +18,13 @@ namespace sweepcdt::detail {
 // the plans gone stale cost more than a second thread gains (box_fused_sphere_fine.stl: 509 points,
 // 12% slower on two).
 inline constexpr uint32_t kPointsForThreads = 1024;
+
+// Points rounded off their segments (corners of facets bent by rounding) are deleted only from
+// stars of at most this many tetrahedra (EditableCdt::unbend_facets_at_steiner_points; a Steiner
+// point's own star has 15-25): larger ones are stars merged from deleted neighbours, where the exact
+// predicates on nearly coplanar points cost many times as much (gearwheel_ascii.stl: 3801 points
+// kept in 118 s unbounded, before the double-word predicate stage; 7189 in 7.3 s at 32, after it).
+inline constexpr std::size_t kLargestBentStar = 32;
 
 // `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner
 // points); both are replaced by the result. `made_from`: per Steiner point, the two points it was

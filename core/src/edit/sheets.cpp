@@ -12,6 +12,7 @@
 
 #include "../ids_text.h"
 #include "../segment_interior.h"
+#include "../triangle_normal.h"
 #include "../steiner/facet_groups.h"  // edge_key
 #include "sweepcdt/editable_cdt.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -195,7 +196,7 @@ class SheetBuilder {
         }
       }
       if (!triangulate(sheet, closing)) return false;
-      if (unbend_ && !keeps_its_side(sheet)) return refuse(sheet, "its facet, bent by rounding, would fold over without it");
+      if (unbend_ && !bent_fill_fits(sheet)) return refuse(sheet, "its facet, bent by rounding, would fold over without it");
       return true;
     }
   }
@@ -212,7 +213,7 @@ class SheetBuilder {
   //   is only which tests to make). A guard: the slivers of the first rule were the only such
   //   triangles seen (a jittered vase_std: 154 `check` failures before either rule; with the first
   //   alone none there, on 5 more double-coordinate surfaces, or on 15 jittered vases).
-  bool keeps_its_side(const Sheet<D>& sheet) const {
+  bool bent_fill_fits(const Sheet<D>& sheet) const {
     if constexpr (D == 3) {
       for (const auto& t : sheet.fill)
         for (int i = 0; i < 3; ++i) {
@@ -220,7 +221,8 @@ class SheetBuilder {
           if (s >= unbend_->first_steiner && unbend_->ridge(x, s) && unbend_->ridge(s, y)) return false;
         }
       const auto& c0 = through_v_[sheet.constraints.front()];
-      const double n[3] = {normal_component(c0, 0), normal_component(c0, 1), normal_component(c0, 2)};
+      double n[3];
+      for (int k = 0; k < 3; ++k) n[k] = normal_component(point_(c0[0]), point_(c0[1]), point_(c0[2]), k);
       const double largest = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
       for (int k = 0; k < 3; ++k) {
         if (std::abs(n[k]) < 0.5 * largest) continue;
@@ -232,23 +234,15 @@ class SheetBuilder {
     }
     return true;
   }
-  // The axis of the largest component of constraint c's normal (D = 3) along which it projects
-  // one-to-one (exactly); projection_axis() otherwise.
+  // The axis of the largest component of constraint c's normal (D = 3) if c projects one-to-one
+  // along it (exactly), else projection_axis().
   int dominant_axis(uint32_t c) const {
     if constexpr (D == 3) {
       const auto& t = through_v_[c];
-      int best = 0;
-      for (int k = 1; k < 3; ++k)
-        if (std::abs(normal_component(t, k)) > std::abs(normal_component(t, best))) best = k;
+      const int best = detail::dominant_axis(point_(t[0]), point_(t[1]), point_(t[2]));
       if (projected_orient(t.data(), t[D - 1], best) != Sign::Zero) return best;
     }
     return projection_axis(c);
-  }
-  // The normal's component along `axis` of the triangle c (D = 3), in floating point.
-  double normal_component(const std::array<uint32_t, D>& c, int axis) const {
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    const double *a = point_(c[0]), *b = point_(c[1]), *d = point_(c[2]);
-    return (b[i] - a[i]) * (d[j] - a[j]) - (b[j] - a[j]) * (d[i] - a[i]);
   }
 
   std::array<uint32_t, 2> orient_segment_like(std::array<uint32_t, 2> ab, const std::array<uint32_t, D>& c0) const {

@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "facet_groups.h"
+#include "../triangle_normal.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -90,23 +91,14 @@ class Flipper {
       if (predicates::orient_projected<3>({p(tri[0]), p(tri[1]), p(tri[2])}, k) != Sign::Zero) {
         drop = k;
         // Prefer the axis of the largest normal component (the least distorted projection).
-        const double n[3] = {normal(tri, 0), normal(tri, 1), normal(tri, 2)};
-        int best = 0;
-        for (int a = 1; a < 3; ++a)
-          if (std::abs(n[a]) > std::abs(n[best])) best = a;
+        const int best = dominant_axis(p(tri[0]), p(tri[1]), p(tri[2]));
         if (predicates::orient_projected<3>({p(tri[0]), p(tri[1]), p(tri[2])}, best) != Sign::Zero) drop = best;
         break;
       }
     return drop;
   }
 
-  double normal(const Triangle& t, int axis) const {
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    const double* a = p(t[0]);
-    const double* b = p(t[1]);
-    const double* c = p(t[2]);
-    return (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
-  }
+  double normal(const Triangle& t, int axis) const { return normal_component(p(t[0]), p(t[1]), p(t[2]), axis); }
 
   bool try_flip(uint64_t key, uint32_t t1, uint32_t t2) {
     // t1 = (a, b, c) runs a -> b; t2 must run b -> a with third vertex d.

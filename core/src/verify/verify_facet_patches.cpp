@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "../ids_text.h"
+#include "../triangle_normal.h"
 #include "sweepcdt/predicates.h"
 
 namespace sweepcdt::detail {
@@ -22,19 +23,6 @@ struct DirectedEdge {
 };
 
 DirectedEdge directed(uint32_t facet, uint32_t from, uint32_t to) { return {facet, std::min(from, to), std::max(from, to), from < to}; }
-
-// The axis of the largest component of triangle abc's normal (floating point: it only picks the
-// least distorted projection; orientations in it are exact).
-int dominant_axis(const double* a, const double* b, const double* c) {
-  int best = 0;
-  double largest = -1;
-  for (int axis = 0; axis < 3; ++axis) {
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    const double n = std::abs((b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]));
-    if (n > largest) largest = n, best = axis;
-  }
-  return best;
-}
 
 // A facet's projection: the axis dropped, and the sign there of its first triangle turned material
 // side positive (all of a facet's triangles, so turned, have it: they are coplanar and agree).
