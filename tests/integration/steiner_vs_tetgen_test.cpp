@@ -5,15 +5,13 @@
 // stay within 2x TetGen's (+16) on every input (all chosen so that TetGen handles them).
 #include <gtest/gtest.h>
 
-#include <cmath>
-
-#include <random>
-
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <random>
 #include <regex>
 #include <string>
 #include <utility>
@@ -159,19 +157,24 @@ TEST(SteinerVsTetgen, CadPartsWithRoundingNoiseMeshByDefault) {
   }
 }
 
-// A scanned-looking surface: a revolved profile (a vase) whose vertices are jittered by 1e-4 of its
-// size in double, so no two triangles are coplanar and Steiner points are rounded off their segments
-// — corners of facets bent by rounding, which the deletion pass may still delete
-// (EditableCdt::unbend_facets_at_steiner_points). Where it fills a bent hole, a triangle of three
-// points nearly on one segment could face the wrong way or fold onto the other facet (sheets.cpp:
-// keeps_its_side); `sweepcdt check`'s verification must accept every result, and the pass must
-// delete most of the points refinement added.
-Plc<3> jittered_vase(int around, int rings, uint64_t seed) {
+// `plc` with its points moved by up to 2e-3 in each coordinate (seeded): a scan's noise, in double,
+// so no two triangles are coplanar and Steiner points are rounded off their segments — corners of
+// facets bent by rounding, which the deletion pass may still delete
+// (EditableCdt::unbend_facets_at_steiner_points).
+Plc<3> jittered(Plc<3> plc, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> jitter(-2e-3, 2e-3);
+  for (double& x : plc.points) x += jitter(rng);
+  plc.checked = {};
+  return plc;
+}
+
+// A revolved profile (a vase, 40 high, radius 10 to 20): `rings` rings of `around` points, fans at
+// the ends; long thin triangles around it.
+Plc<3> vase(int around, int rings) {
   Plc<3> plc;
   const auto add = [&](double x, double y, double z) {
-    plc.points.insert(plc.points.end(), {x + jitter(rng), y + jitter(rng), z + jitter(rng)});
+    plc.points.insert(plc.points.end(), {x, y, z});
     return static_cast<uint32_t>(plc.num_points() - 1);
   };
   std::vector<std::vector<uint32_t>> ring(rings);
@@ -194,15 +197,10 @@ Plc<3> jittered_vase(int around, int rings, uint64_t seed) {
   return plc;
 }
 
-// `plc` with its points moved by up to 2e-3 in each coordinate (seeded): a scan's noise.
-Plc<3> jittered(Plc<3> plc, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> jitter(-2e-3, 2e-3);
-  for (double& x : plc.points) x += jitter(rng);
-  plc.checked = {};
-  return plc;
-}
-
+// Where the deletion pass fills a bent hole, a triangle of three points nearly on one segment could
+// fold onto the other facet or face the wrong way (sheets.cpp: bent_fill_fits): `sweepcdt check`'s
+// verification must accept every result, and the pass must delete at least a third of the points
+// refinement added.
 void mesh_jittered_and_check(const Plc<3>& surface, const std::string& name) {
   ASSERT_TRUE(find_problems(surface).empty()) << name;
   Options options = mesh_defaults();
@@ -220,11 +218,11 @@ void mesh_jittered_and_check(const Plc<3>& surface, const std::string& name) {
 }
 
 TEST(SteinerDeletion, JitteredScansKeepFewPointsAndPassCheck) {
-  for (uint64_t seed = 1; seed <= 3; ++seed) mesh_jittered_and_check(jittered_vase(96, 6, seed), "jittered vase " + std::to_string(seed));
+  for (uint64_t seed = 1; seed <= 3; ++seed) mesh_jittered_and_check(jittered(vase(96, 6), seed), "jittered vase " + std::to_string(seed));
   // A shelled vase as FreeCAD exports it (make_cad_parts.py), jittered: its thin strips and close
-  // walls give the bent holes whose ears fold over (vase_std_j: 154 problems before keeps_its_side).
-  const Plc<3> vase = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "vase_std.stl");
-  mesh_jittered_and_check(jittered(vase, 1), "vase_std.stl jittered");
+  // walls give the bent holes whose ears fold over (154 `check` problems before bent_fill_fits).
+  const Plc<3> exported = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "vase_std.stl");
+  mesh_jittered_and_check(jittered(exported, 1), "vase_std.stl jittered");
 }
 
 // The deletion pass tries every Steiner point (remove_steiner.cpp: spread out first) and tries a
