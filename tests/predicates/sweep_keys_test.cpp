@@ -315,6 +315,55 @@ TYPED_TEST(SweepKeys, KeyIntervalsEncloseTheExactKeys) {
   EXPECT_GT(finite, cases * 7 / 10);
 }
 
+// The double-word powers the star sweep caches per queue item (power_words) order two simplices
+// exactly as the rational powers do whenever they certify an order, certify none when the powers
+// are equal, and certify most orders that the enclosures leave open, on grid points moved by a few
+// ulps (nearly cospherical and coplanar, as the stars of points on facets bent by rounding) at
+// several scales, with the point a free point, a vertex of one simplex or of both.
+TYPED_TEST(SweepKeys, PowerWordsOrderAsTheExactPowers) {
+  constexpr int D = TypeParam::value;
+  Rng rng(0x70770000 + D);
+  FailureBudget budget;
+  int open = 0, certified_open = 0, equal = 0;
+  const int cases = 3000;
+  const double scales[] = {1.0, 0x1p-40, 0x1p30, 1e-3};
+  for (int n = 0; n < cases; ++n) {
+    std::array<Point<D>, 2 * D + 3> pts;
+    const double scale = scales[n % std::size(scales)];
+    for (auto& p : pts) {
+      p = grid_point<D>(rng, -2, 2);
+      for (int k = 0; k < D; ++k) {
+        p[k] *= scale;
+        if (n % 3)
+          for (int u = uniform_int(rng, 0, 3); u > 0; --u) p[k] = std::nextafter(p[k], uniform_int(rng, 0, 1) ? 1e300 : -1e300);
+      }
+    }
+    pr::Vertices<D + 1> s, t;
+    for (int i = 0; i <= D; ++i) s[i] = {pts[i].data(), static_cast<uint32_t>(i)};
+    t = s;
+    for (int r = uniform_int(rng, 1, D + 1), i = 0; i < r; ++i)  // t shares D + 1 - r vertices with s
+      t[i] = {pts[D + 1 + i].data(), static_cast<uint32_t>(D + 1 + i)};
+    std::shuffle(t.begin(), t.end(), rng);
+    if (degenerate<D>(s) || degenerate<D>(t)) continue;
+    const int which = n % 4;  // a free point, a vertex of s, of t, of both when they share one
+    const double* q = which == 0 ? pts[2 * D + 2].data() : which == 1 ? s[0].x : which == 2 ? t[0].x : s[D].x;
+    const ref::Vec qv = vec<D>(q);
+    const int expected = ref::sign(ref::power(sphere<D>(s, nullptr), qv) - ref::power(sphere<D>(t, nullptr), qv));
+    const std::optional<Sign> got = pr::power_order_from_words(pr::power_words<D>(s, q), pr::power_words<D>(t, q));
+    const pr::KeyInterval a = pr::power_interval<D>(s, q), b = pr::power_interval<D>(t, q);
+    const bool apart = a.hi < b.lo || b.hi < a.lo;
+    if (expected == 0) ++equal;
+    if (expected != 0 && !apart) ++open, certified_open += got.has_value();
+    if (got && pr::to_int(*got) != expected && budget.fail())
+      ADD_FAILURE() << "power words<" << D << "> certified " << sign_name(pr::to_int(*got)) << ", exact "
+                    << sign_name(expected) << "\n" << dump_pair<D>(s, t) << dump_point<D>("q", q);
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(equal, cases / 20) << "too few equal powers: the zero case is not exercised";
+  EXPECT_GT(open, cases / 50) << "too few orders the enclosures leave open";
+  EXPECT_GT(certified_open, open / 2) << "the words certify too few of the orders the enclosures leave open (the rest are second order in the ulps)";
+}
+
 // Theorems 1 and 2 on grid (degenerate) inputs: for s1 = f + a and s2 = f + b with a, b strictly on
 // opposite sides of f, if the pair is locally Delaunay under the perturbation (b not inside the
 // circumsphere of s1), the simplex behind f comes first, by circumcentre (sweep plane) and by power

@@ -219,6 +219,24 @@ KeyInterval power_interval(const Vertices<D + 1>& s, const double* q) {
 }
 
 template <int D>
+PowerWords power_words(const Vertices<D + 1>& s, const double* q) {
+  detail::DDFilterArith a;
+  const detail::DDApprox l = lifted_det<D>(a, s, Vertex{q, 0}), d = detail::orient_det<D>(a, coords_of(s));
+  return {l.hi, l.lo, l.mag, l.rounds, d.hi, d.lo, d.mag, d.rounds};
+}
+
+std::optional<Sign> power_order_from_words(const PowerWords& s, const PowerWords& t) {
+  const detail::DDApprox ls{s.l_hi, s.l_lo, s.l_mag, s.l_rounds}, ds{s.d_hi, s.d_lo, s.d_mag, s.d_rounds};
+  const detail::DDApprox lt{t.l_hi, t.l_lo, t.l_mag, t.l_rounds}, dt{t.d_hi, t.d_lo, t.d_mag, t.d_rounds};
+  // PowerDifference's formula: sign(Psi_q(s) - Psi_q(t)) = sign(L_t Ds - L_s Dt) sign(Ds Dt).
+  const std::optional<Sign> sign_s = detail::certain_sign(ds), sign_t = detail::certain_sign(dt);
+  if (!sign_s || !sign_t) return std::nullopt;
+  const std::optional<Sign> r = detail::certain_sign(lt * ds - ls * dt);
+  if (!r) return std::nullopt;
+  return *r * *sign_s * *sign_t;
+}
+
+template <int D>
 KeyInterval circumcenter_interval(const Vertices<D + 1>& s, int k) {
   detail::FilterArith a;
   // c_k = p_D[k] + N_k / (2 det A).
@@ -383,6 +401,7 @@ Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
 
 #define SWEEPCDT_INSTANTIATE(D)                                                                  \
   template KeyInterval power_interval<D>(const Vertices<D + 1>&, const double*);                  \
+  template PowerWords power_words<D>(const Vertices<D + 1>&, const double*);                       \
   template KeyInterval circumcenter_interval<D>(const Vertices<D + 1>&, int);                     \
   template Sign compare_circumcenters<D>(const Vertices<D + 1>&, const Vertices<D + 1>&);        \
   template Sign compare_power<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex&); \

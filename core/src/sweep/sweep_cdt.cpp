@@ -103,6 +103,7 @@ class Sweep {
     uint32_t f_version;
     bool g_is_face;
     predicates::KeyInterval key;  // encloses the first key entry: most comparisons stop here
+    mutable uint32_t words = kNone;  // star sweep: its entry in words_ once a comparison needed it
   };
   struct ItemOrder {
     const Sweep* sweep;
@@ -173,11 +174,34 @@ class Sweep {
     if (sa == sb) return false;
     if constexpr (std::is_same_v<Frame, predicates::PlaneSweep>)
       return predicates::compare_circumcenters<D>(vertices(a.s), vertices(b.s)) == Sign::Negative;
-    else if constexpr (kStar)  // decreasing power tuples (paper §5)
+    else if constexpr (kStar) {  // decreasing power tuples (paper §5)
+      if (powers_may_differ_at_centre(a.s, b.s))
+        if (const std::optional<Sign> first = predicates::power_order_from_words(words_of(b), words_of(a)))
+          return (frame_.toward[0] > 0 ? *first : -*first) == Sign::Negative;
       return predicates::compare_power_sequences<D>(vertices(b.s), vertices(a.s), star_centre().data(), frame_.toward.data(), D + 2) ==
              Sign::Negative;
-    else
+    } else
       return predicates::compare_power_tuples<D>(vertices(a.s), vertices(b.s), vertices(*delta_)) == Sign::Negative;
+  }
+  // Whether to compare two items' powers at the centre by their words: not when they share a facet
+  // (compare_power_sequences decides that from one insphere test) nor when the centre is on the
+  // line of the edge they share (then the powers are equal: a Steiner point's own segment).
+  bool powers_may_differ_at_centre(const std::array<uint32_t, D + 1>& s, const std::array<uint32_t, D + 1>& t) const {
+    std::array<uint32_t, D + 1> shared;
+    int n = 0;
+    for (const uint32_t v : s)
+      if (std::count(t.begin(), t.end(), v)) shared[n++] = v;
+    if (n >= D) return false;
+    return n != 2 || !predicates::collinear<D>(point(shared[0]), point(shared[1]), frame_.centre[0]);
+  }
+  // The double-word power of the item's simplex at the star's centre, computed on first use (a copy:
+  // computing another item's may move words_).
+  predicates::PowerWords words_of(const Item& item) const {
+    if (item.words == kNone) {
+      item.words = static_cast<uint32_t>(words_.size());
+      words_.push_back(predicates::power_words<D>(vertices(item.s), frame_.centre[0]));
+    }
+    return words_[item.words];
   }
   // The star's centre p and its tie-breaking points: no vertices (their lifts cancel in power
   // comparisons, sweep_keys.h), so no ids.
@@ -560,6 +584,7 @@ class Sweep {
   std::vector<char> reached_;  // vertices of built simplices, for progress reports
   uint64_t reached_count_ = 0;
   std::priority_queue<Item, std::vector<Item>, ItemOrder> queue_;
+  mutable std::vector<predicates::PowerWords> words_;  // Item::words (star sweep)
   std::vector<uint32_t> simplices_;
 };
 

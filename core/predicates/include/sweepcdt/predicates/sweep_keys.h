@@ -7,6 +7,8 @@
 // of  value + sum_v eps_v * coeff_v  : the value if it is non-zero, else the coefficient of the
 // least vertex id that is non-zero.
 #pragma once
+#include <optional>
+
 #include "sweepcdt/predicates/sign.h"
 #include "sweepcdt/predicates/vertex.h"
 
@@ -45,6 +47,26 @@ struct KeyInterval {
 // Psi_q(s), the first entry of the power tuple for q = Delta_0.
 template <int D>
 KeyInterval power_interval(const Vertices<D + 1>& s, const double* q);
+
+// Psi_q(s) = -L / Ds as two double-word values (the predicates' second stage, dd_approx.h), each
+// with what bounds its error: L the lifted determinant of s's vertices about q, Ds the orientation
+// determinant. A sweep computes them once for a queue item whose enclosure overlaps another's and
+// compares items from them (power_order_from_words) instead of evaluating the exact comparison's
+// stages again for every pair: in the star sweeps of points on facets bent by rounding most
+// comparisons past the enclosures need the second stage, and a heap compares one item many times.
+struct PowerWords {
+  double l_hi, l_lo, l_mag;
+  int l_rounds;
+  double d_hi, d_lo, d_mag;
+  int d_rounds;
+};
+template <int D>
+PowerWords power_words(const Vertices<D + 1>& s, const double* q);
+
+// sign(Psi_q(s) - Psi_q(t)) from their words when the double-word arithmetic certifies it (then the
+// unperturbed powers differ and the perturbation cannot change the order), else nullopt: compare
+// exactly. The same certificate as the second stage of compare_power's exact evaluation.
+std::optional<Sign> power_order_from_words(const PowerWords& s, const PowerWords& t);
 
 // Coordinate k of the circumcentre of s.
 template <int D>
