@@ -257,7 +257,8 @@ TEST(Delaunay3, Throws) {
 }
 
 // DelaunayEdges (kept between Steiner rounds): after each batch of appended points, has_edge agrees
-// with the edges of the triangulation built from scratch, for every pair of points; and a pair that
+// with the edges of the triangulation built from scratch, for every pair of points, and
+// link_vertices with each point's edges; and a pair that
 // may_have_changed calls unchanged really is (an edge exactly when it was one before the batch), and
 // a pair it may call changed has an end among changed_points (each listed once): refinement looks
 // only there. Random and grid points (ties decided by the perturbation).
@@ -286,6 +287,14 @@ void expect_incremental_edges(const std::vector<double>& all, const std::string&
     for (auto v = static_cast<uint32_t>(before_end); v < end; ++v)
       ASSERT_TRUE(changed.count(v)) << what << ": new point " << v << " not listed";
     if (changed.size() < end) ++partial;
+    for (uint32_t a = 0; a < end; ++a) {  // link_vertices: exactly the ends of a's edges
+      std::vector<uint32_t> link;
+      incremental.link_vertices(a, link);
+      std::set<uint32_t> got(link.begin(), link.end()), expected;
+      for (const auto& [x, y] : after)
+        if (x == a || y == a) expected.insert(x == a ? y : x);
+      ASSERT_EQ(got, expected) << what << ": link of " << a << " with " << end << " points";
+    }
     for (uint32_t a = 0; a < end; ++a)
       for (uint32_t b = a + 1; b < end; ++b) {
         const bool edge = after.count({a, b}) > 0;

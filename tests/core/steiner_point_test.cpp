@@ -80,3 +80,43 @@ TEST(SteinerPoint, OlderConstructionsAreRecognised) {
 }
 
 }  // namespace
+
+// parameter_between (a piece split near its encroaching vertex's projection): strictly inside the
+// piece, within 2^-kShellBits of it of the target, in either order of the ends; and on a segment
+// with float ends (whose difference is exact) the point it gives is mostly exactly on the segment,
+// a + t (b - a) without rounding, as the shells' and midpoints' points are (refine.h: no folds).
+TEST(SteinerPoint, ParameterBetweenStaysInsideNearItsTargetAndOnFloatSegments) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1), coord(-100, 100);
+  int exact = 0;
+  const int trials = 2000;
+  for (int trial = 0; trial < trials; ++trial) {
+    // A piece [ta, tb] as refinement makes them: dyadic ends from halvings of [0, 1].
+    const int depth = 1 + trial % 12;
+    const double step = std::ldexp(1.0, -depth);
+    const double ta = std::floor(unit(rng) / step) * step, tb = ta + step;
+    const double fraction = 0.1 + 0.8 * unit(rng);
+    for (const bool reversed : {false, true}) {
+      const double from = reversed ? tb : ta, to = reversed ? ta : tb;
+      const double t = parameter_between(from, to, fraction);
+      ASSERT_GT(t, ta) << trial;
+      ASSERT_LT(t, tb) << trial;
+      ASSERT_LE(std::fabs(t - (from + fraction * (to - from))), step * 0x1p-20) << trial;
+    }
+    float a[3], b[3];
+    double ad[3], bd[3], x[3];
+    for (int k = 0; k < 3; ++k) ad[k] = a[k] = static_cast<float>(coord(rng)), bd[k] = b[k] = static_cast<float>(coord(rng));
+    point_on_segment(ad, bd, parameter_between(ta, tb, fraction), x);
+    ASSERT_TRUE(is_point_on_segment(ad, bd, x)) << trial;
+    // Exact when t (b - a) needs no rounding (fma's remainder is 0) and neither does adding a (TwoSum).
+    const double t = parameter_between(ta, tb, fraction);
+    bool rounded = false;
+    for (int k = 0; k < 3; ++k) {
+      const double d = bd[k] - ad[k], product = t * d, remainder = std::fma(t, d, -product);
+      const double sum = ad[k] + product, back = sum - ad[k], error = (ad[k] - (sum - back)) + (product - back);
+      rounded |= remainder != 0 || error != 0;
+    }
+    exact += !rounded;
+  }
+  EXPECT_GT(exact, trials / 2) << "points on float segments mostly rounded off them";
+}

@@ -15,8 +15,9 @@
 // (below). t follows the concentric-shell rule of Ruppert and
 // Shewchuk: a piece with exactly one input vertex as an end is split at distance 2^k from it (the
 // power of two nearest half its length; the distance rounded to 20 significant bits of the piece,
-// below), so pieces that meet at an input vertex end on common spheres about it; any other piece
-// at its middle. When that point coincides with an existing one (two segments within rounding of
+// below), so pieces that meet at an input vertex end on common spheres about it; a piece between
+// two Steiner points where the vertex that encroaches it most projects onto it (parameter_between),
+// any other at its middle. When that point coincides with an existing one (two segments within rounding of
 // each other), it takes a quarter or three quarters of the piece instead. A fold point (a point inside
 // a facet, refine.h) is the rounded point a + t (b - a) of the two points a, b of the fold it splits.
 // The recogniser below does not need to know which t: each coordinate is a monotone function of t,
@@ -48,6 +49,15 @@ inline double split_parameter(double ta, bool a_is_input, double tb, bool b_is_i
   const double quantum = std::ldexp(1.0, std::ilogb(span) - kShellBits);
   const double step = std::round(radius / length / quantum) * quantum;
   return a_is_input ? ta + step : tb - step;
+}
+
+// The parameter `fraction` of the way from ta to tb (either order), its distance from ta rounded to
+// 2^-kShellBits of the piece as split_parameter rounds the shells' (refine splits a piece between
+// two Steiner points where the vertex encroaching it most projects onto it).
+inline double parameter_between(double ta, double tb, double fraction) {
+  const double span = std::fabs(tb - ta);
+  const double quantum = std::ldexp(1.0, std::ilogb(span) - kShellBits);
+  return ta + std::copysign(std::round(fraction * span / quantum) * quantum, tb - ta);
 }
 
 // Whether x == point_on_segment(a, b, t) for some double t in (0, 1), or the same from b to a, and x

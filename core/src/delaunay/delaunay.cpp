@@ -208,6 +208,20 @@ class Delaunay {
   const std::vector<uint32_t>& changed() const { return changed_; }
 
   // Whether ab is an edge: a search of the simplices around a (ghosts included).
+  void link_vertices(uint32_t a, std::vector<uint32_t>& out) {
+    stamp_ += 2;
+    star_.assign(1, vertex_simplex_[a]);
+    marks_[star_[0]] = stamp_;
+    for (std::size_t head = 0; head < star_.size(); ++head) {
+      const Simplex& v = cells_[star_[head]].v;
+      for (int i = 0; i <= D; ++i) {
+        if (v[i] == a) continue;
+        if (v[i] != kInfinite) out.push_back(v[i]);
+        const uint32_t u = neighbor(star_[head], i);
+        if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u);
+      }
+    }
+  }
   bool has_edge(uint32_t a, uint32_t b) {
     stamp_ += 2;
     star_.assign(1, vertex_simplex_[a]);
@@ -603,6 +617,7 @@ void DelaunayEdges::insert_new_points() {
 }
 
 bool DelaunayEdges::has_edge(uint32_t a, uint32_t b) { return impl_->triangulation.has_edge(a, b); }
+void DelaunayEdges::link_vertices(uint32_t a, std::vector<uint32_t>& out) { impl_->triangulation.link_vertices(a, out); }
 
 DelaunayMesh DelaunayEdges::mesh() const { return impl_->triangulation.mesh(); }
 

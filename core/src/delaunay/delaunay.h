@@ -62,6 +62,8 @@ class DelaunayEdges {
   void insert_new_points();
   // Whether ab is an edge of the triangulation (a and b inserted points).
   bool has_edge(uint32_t a, uint32_t b);
+  // The vertices sharing a tetrahedron with a (with repeats).
+  void link_vertices(uint32_t a, std::vector<uint32_t>& out);
   // False when ab is an edge exactly when it was before the last insert_new_points: neither end is
   // new and some end lost no tetrahedron (every new edge has a new end). All true after construction.
   bool may_have_changed(uint32_t a, uint32_t b) const;

@@ -113,7 +113,7 @@ class Refiner {
       for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
         check_limits(split, 0);
         new_point.clear();
-        for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
+        for (uint64_t key : split) new_point.emplace(key, add_split_point(key, &delaunay));  // before these points
         split_triangles(new_point);
         delaunay.insert_new_points();
         report_progress();
@@ -140,7 +140,7 @@ class Refiner {
       report_progress();
       if (split.empty()) continue;
       new_point.clear();
-      for (uint64_t key : split) new_point.emplace(key, add_split_point(key));
+      for (uint64_t key : split) new_point.emplace(key, add_split_point(key, nullptr));  // folds: the middle
       split_triangles(new_point);
     }
   }
@@ -394,7 +394,44 @@ class Refiner {
   // The concentric-shell rule (refine.h, sweepcdt/steiner_point.h): returns the new point's id. A
   // point is made from its input segment's ends at its parameter along the segment when their
   // difference is exact, else (and on a fold segment) from the ends of the piece it splits.
-  uint32_t add_split_point(uint64_t key) {
+  // Where the vertex c that encroaches the piece ab most (the largest angle acb above 90 degrees,
+  // among the Delaunay neighbours of a and b) projects onto it, as a fraction of ab from a — when
+  // splitting ab at its middle would not free it of c (c is in the diametral ball of the half its
+  // projection falls in); else nullopt. Floating point: it only chooses where a point goes on the
+  // segment, which any parameter does exactly (steiner_point.h).
+  std::optional<double> encroacher_projection(uint32_t a, uint32_t b, DelaunayEdges& delaunay) {
+    near_.clear();
+    delaunay.link_vertices(a, near_);
+    delaunay.link_vertices(b, near_);
+    const double* pa = p(a);
+    const double* pb = p(b);
+    double least_cosine = 0;  // of the angle acb: below 0 in the diametral ball
+    const double* most = nullptr;
+    double fraction = 0, ab2 = 0;
+    for (int k = 0; k < 3; ++k) ab2 += (pb[k] - pa[k]) * (pb[k] - pa[k]);
+    for (const uint32_t c : near_) {
+      if (c == a || c == b) continue;
+      const double* pc = p(c);
+      double dot = 0, ca2 = 0, cb2 = 0, along = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double ca = pa[k] - pc[k], cb = pb[k] - pc[k];
+        dot += ca * cb, ca2 += ca * ca, cb2 += cb * cb, along -= ca * (pb[k] - pa[k]);
+      }
+      const double cosine = dot / std::sqrt(ca2 * cb2);
+      if (cosine < least_cosine) least_cosine = cosine, most = pc, fraction = along / ab2;
+    }
+    if (!most) return std::nullopt;
+    const double half_centre = fraction < 0.5 ? 0.25 : 0.75;
+    double to_centre2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = pa[k] + half_centre * (pb[k] - pa[k]) - most[k];
+      to_centre2 += d * d;
+    }
+    if (to_centre2 >= ab2 / 16) return std::nullopt;  // the midpoint frees ab of c
+    return fraction;
+  }
+
+  uint32_t add_split_point(uint64_t key, DelaunayEdges* delaunay) {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
     const bool fold = fold_segments_.count(key) > 0;
     const std::array<uint32_t, 2> segment = fold ? std::array<uint32_t, 2>{kNone, kNone} : input_segment_of(a, b);
@@ -407,6 +444,15 @@ class Refiner {
     const double* v = p(ends[1]);
     const double length = std::sqrt((v[0] - u[0]) * (v[0] - u[0]) + (v[1] - u[1]) * (v[1] - u[1]) + (v[2] - u[2]) * (v[2] - u[2]));
     double t = split_parameter(ta, a_input, tb, b_input, length);
+    // A piece between two Steiner points is split where the vertex that encroaches it most projects
+    // onto it, when the midpoint would not free the piece of that vertex and the projection is in
+    // the piece's middle 80% (the reference point of Si's segment recovery, TetGen 1.5): one split
+    // instead of halving towards it, and fewer points for the deletion pass to try. Pieces at an
+    // input vertex keep the shells, which protect segments meeting there at small angles; a
+    // segment's first split stays at its middle.
+    if (delaunay && !a_input && !b_input)
+      if (const std::optional<double> f = encroacher_projection(a, b, *delaunay); f && *f > 0.1 && *f < 0.9)
+        t = parameter_between(along_segment ? parameter(a, segment) : 0.0, along_segment ? parameter(b, segment) : 1.0, *f);
     double x[3];
     point_on_segment(u, v, t, x);
     // Two segments that pass within rounding of each other can get the same rounded point (a smooth
@@ -477,6 +523,7 @@ class Refiner {
   TrianglePieces pieces_{tris_, original_, unflipped_};  // splits them; in order after put_in_order()
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
+  std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
 };
