@@ -207,30 +207,29 @@ class Delaunay {
   // The points touched (new ones included) by the last build/insert_new_points, each once.
   const std::vector<uint32_t>& changed() const { return changed_; }
 
-  // Whether ab is an edge: a search of the simplices around a (ghosts included).
+  // The vertices of the tetrahedra around a (the infinite one excluded; with repeats).
   void link_vertices(uint32_t a, std::vector<uint32_t>& out) {
-    stamp_ += 2;
-    star_.assign(1, vertex_simplex_[a]);
-    marks_[star_[0]] = stamp_;
-    for (std::size_t head = 0; head < star_.size(); ++head) {
-      const Simplex& v = cells_[star_[head]].v;
-      for (int i = 0; i <= D; ++i) {
-        if (v[i] == a) continue;
-        if (v[i] != kInfinite) out.push_back(v[i]);
-        const uint32_t u = neighbor(star_[head], i);
-        if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u);
-      }
-    }
+    any_star_vertex(a, [&](uint32_t u) {
+      if (u != kInfinite) out.push_back(u);
+      return false;
+    });
   }
+  // Whether ab is an edge: a search of the simplices around a (ghosts included).
   bool has_edge(uint32_t a, uint32_t b) {
+    return any_star_vertex(a, [&](uint32_t u) { return u == b; });
+  }
+  // Whether visit(u) is true for some vertex u != a of a tetrahedron around a, visiting them
+  // tetrahedron by tetrahedron out from a's (with repeats) until it is.
+  template <class Visit>
+  bool any_star_vertex(uint32_t a, Visit&& visit) {
     stamp_ += 2;
     star_.assign(1, vertex_simplex_[a]);
     marks_[star_[0]] = stamp_;
     for (std::size_t head = 0; head < star_.size(); ++head) {
       const Simplex& v = cells_[star_[head]].v;
       for (int i = 0; i <= D; ++i) {
-        if (v[i] == b) return true;
         if (v[i] == a) continue;
+        if (visit(v[i])) return true;
         const uint32_t u = neighbor(star_[head], i);  // shares the facet without v[i], which holds a
         if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u);
       }
@@ -569,7 +568,7 @@ class Delaunay {
   std::vector<uint8_t> dead_;
   std::vector<uint32_t> free_;
   std::vector<uint32_t> vertex_simplex_;  // per inserted point: a live simplex holding it
-  std::vector<uint32_t> star_;            // has_edge's search
+  std::vector<uint32_t> star_;            // any_star_vertex's search
   std::vector<uint32_t> touched_round_;   // per point: the last round (insert_new_points call) touching it
   std::vector<uint32_t> changed_;         // the points touched_round_ marks with round_
   uint32_t round_ = 0;
