@@ -9,7 +9,9 @@
 //      triangulation as the sweep sphere, kept between rounds; only segments near the new points
 //      are looked up again);
 //   2. every segment that is not one of its edges is split — at a power-of-two distance from its
-//      end when exactly one end is an input vertex, at its midpoint otherwise, each point computed
+//      end when exactly one end is an input vertex; between two Steiner points where the vertex
+//      that encroaches it most projects onto it when a midpoint would not free it of that vertex
+//      (refine.cpp: encroacher_projection); at its midpoint otherwise; each point computed
 //      from the input segment's ends at its parameter along it (a point that would round onto an
 //      existing one takes another t: steiner_point.h) (the concentric-shell
 //      rule of Ruppert and Shewchuk: subsegments that meet at an input vertex end on common spheres
