@@ -103,9 +103,8 @@ TEST(SteinerPoint, ParameterBetweenStaysInsideNearItsTargetAndOnFloatSegments) {
       ASSERT_LT(t, tb) << trial;
       ASSERT_LE(std::fabs(t - (from + fraction * (to - from))), step * 0x1p-20) << trial;
     }
-    float a[3], b[3];
-    double ad[3], bd[3], x[3];
-    for (int k = 0; k < 3; ++k) ad[k] = a[k] = static_cast<float>(coord(rng)), bd[k] = b[k] = static_cast<float>(coord(rng));
+    double ad[3], bd[3], x[3];  // float coordinates
+    for (int k = 0; k < 3; ++k) ad[k] = static_cast<float>(coord(rng)), bd[k] = static_cast<float>(coord(rng));
     point_on_segment(ad, bd, parameter_between(ta, tb, fraction), x);
     ASSERT_TRUE(is_point_on_segment(ad, bd, x)) << trial;
     // Exact when t (b - a) needs no rounding (fma's remainder is 0) and neither does adding a (TwoSum).

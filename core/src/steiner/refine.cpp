@@ -113,7 +113,7 @@ class Refiner {
       for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
         check_limits(split, 0);
         new_point.clear();
-        for (uint64_t key : split) new_point.emplace(key, add_split_point(key, &delaunay));  // before these points
+        for (uint64_t key : split) new_point.emplace(key, add_split_point(key, &delaunay));
         split_triangles(new_point);
         delaunay.insert_new_points();
         report_progress();
@@ -140,7 +140,7 @@ class Refiner {
       report_progress();
       if (split.empty()) continue;
       new_point.clear();
-      for (uint64_t key : split) new_point.emplace(key, add_split_point(key, nullptr));  // folds: the middle
+      for (uint64_t key : split) new_point.emplace(key, add_split_point(key, nullptr));  // asked for by fold points: the rule without projections
       split_triangles(new_point);
     }
   }
@@ -391,9 +391,6 @@ class Refiner {
       if (tris_[t] != before[t]) unflipped_[t] = 1;
   }
 
-  // The concentric-shell rule (refine.h, sweepcdt/steiner_point.h): returns the new point's id. A
-  // point is made from its input segment's ends at its parameter along the segment when their
-  // difference is exact, else (and on a fold segment) from the ends of the piece it splits.
   // Where the vertex c that encroaches the piece ab most (the largest angle acb above 90 degrees,
   // among the Delaunay neighbours of a and b) projects onto it, as a fraction of ab from a — when
   // splitting ab at its middle would not free it of c (c is in the diametral ball of the half its
@@ -431,6 +428,11 @@ class Refiner {
     return fraction;
   }
 
+  // The concentric-shell rule (refine.h, sweepcdt/steiner_point.h): returns the new point's id.
+  // `delaunay` (the triangulation without this pass's points; none for the splits fold points ask
+  // for) finds the encroaching vertices. A
+  // point is made from its input segment's ends at its parameter along the segment when their
+  // difference is exact, else (and on a fold segment) from the ends of the piece it splits.
   uint32_t add_split_point(uint64_t key, DelaunayEdges* delaunay) {
     const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
     const bool fold = fold_segments_.count(key) > 0;
