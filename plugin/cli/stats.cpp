@@ -50,6 +50,7 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
     j["steiner_points"] = r.cdt.steiner_points;
     j["steiner_points_removed"] = r.cdt.steiner_points_removed;
     j["steiner_rounds"] = r.cdt.steiner_rounds;
+    j["steiner_attempts"] = r.cdt.steiner_attempts;
     j["facets"] = r.cdt.facets;
     j["facet_flips"] = r.cdt.facet_flips;
     j[r.dimension == 3 ? "tetrahedra" : "simplices"] = r.simplices;

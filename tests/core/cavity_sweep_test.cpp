@@ -5,10 +5,14 @@
 // would pass the agreement tests of the other suites unnoticed.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <optional>
 #include <random>
+#include <set>
 #include <string>
 
 #include "cad_noise.h"
+#include "cavity/cavity_cdt.h"
 #include "cavity/disturbed.h"
 #include "delaunay/delaunay.h"
 #include "simplex_interior.h"
@@ -249,3 +253,24 @@ TEST(CavitySweep, BodiesAndPointSets) {
 }
 
 }  // namespace
+
+// With failed_edges, cavity_cdt reports where a cavity finds no CDT (lazy Steiner refinement splits
+// there, cdt.cpp): Schönhardt's prism has none, and its cavity is the whole prism; a box in a box
+// has one, and nothing is reported.
+TEST(CavitySweep, ReportsTheCavitiesWithoutACdt) {
+  const Plc<3> prism = fixtures::twisted_prism(0.5);
+  CdtStatistics stats;
+  std::vector<std::array<uint32_t, 2>> failed;
+  EXPECT_FALSE(detail::cavity_cdt<3>(prism, {}, stats, nullptr, &failed).has_value());
+  ASSERT_FALSE(failed.empty());
+  std::set<uint32_t> ends;
+  for (const auto& [a, b] : failed) ends.insert({a, b});
+  for (uint32_t v = 0; v < 6; ++v) EXPECT_TRUE(ends.count(v)) << "prism vertex " << v << " is in no reported edge";
+  Plc<3> nested;
+  fixtures::add_box(nested, {0, 0, 0}, {4, 4, 4}, true);
+  fixtures::add_box(nested, {1, 1, 1}, {2, 3, 2}, false);
+  failed.clear();
+  const std::optional<Triangulation<3>> tri = detail::cavity_cdt<3>(nested, {}, stats, nullptr, &failed);
+  EXPECT_TRUE(tri.has_value());
+  EXPECT_TRUE(failed.empty());
+}

@@ -14,6 +14,7 @@
 
 #include "cad_noise.h"
 #include "refined_check.h"
+#include "steiner/facet_groups.h"
 #include "steiner/refine.h"
 #include "sweepcdt/cdt.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -328,3 +329,65 @@ TEST(Steiner, OnlyFacetsWithPointsOffThemAreCheckedAgain) {
   EXPECT_NO_THROW(detail::check_refined(r.plc, r.off_input));
 }
 
+
+// Lazy refinement (cdt.cpp) asks refine() for the pieces of some input segments only. Nothing
+// required: no point at all (the facets are only flipped). Every input edge required: the same
+// refined PLC, point for point, as refining every segment.
+TEST(Steiner, RefinesOnlyTheRequiredSegments) {
+  const Plc<3> comb = fixtures::extruded_columns({0, 1, 1.2, 3, 3.1, 5}, {3, 0.5, 3, 0.2, 4}, 2);
+  const Options options = mesh_defaults();
+  const detail::RequiredSegments none;
+  const detail::RefinedPlc lazy = detail::refine(comb, options, &none);
+  EXPECT_TRUE(lazy.steiner_on.empty());
+  EXPECT_EQ(lazy.plc.points, comb.points);
+  detail::RequiredSegments all;
+  for (std::size_t t = 0; t < comb.num_simplices(); ++t)
+    for (int i = 0; i < 3; ++i) all.insert(detail::edge_key(comb.simplex(t)[i], comb.simplex(t)[(i + 1) % 3]));
+  const detail::RefinedPlc every = detail::refine(comb, options);
+  const detail::RefinedPlc required = detail::refine(comb, options, &all);
+  ASSERT_GT(every.steiner_on.size(), 0u) << "the comb needs Steiner points: nothing exercised";
+  EXPECT_EQ(required.plc.points, every.plc.points);
+  EXPECT_EQ(required.plc.simplices, every.plc.simplices);
+  ASSERT_EQ(every.on_segment.size(), every.steiner_on.size());
+  for (std::size_t k = 0; k < every.on_segment.size(); ++k) {
+    const auto [u, v] = every.on_segment[k];
+    if (u == kNone) continue;  // a point inside a facet
+    EXPECT_TRUE(all.count(detail::edge_key(u, v))) << "Steiner point " << k << " names no input edge";
+  }
+}
+
+// Float surfaces get Steiner points lazily (cdt.cpp): only where a cavity finds no CDT. A comb of
+// thin fins has a CDT as given: none, in one refinement, where refining every segment (the same comb
+// a hair off floats takes that path) adds some. Schönhardt's prism has none: its segments are
+// refined in a second attempt, and the result is a validated CDT.
+TEST(Steiner, LazyRefinementOnFloatSurfaces) {
+  const auto mesh = [](const Plc<3>& plc, CdtStatistics& stats) {
+    Options options = mesh_defaults();
+    options.remove_steiner_points = false;
+    options.statistics = &stats;
+    Plc<3> triangulated;
+    const Triangulation<3> tri = cdt(plc, options, &triangulated);
+    EXPECT_TRUE(validate_triangulated(tri, triangulated).ok());
+  };
+  Plc<3> comb = fixtures::extruded_columns({0, 1, 1.25, 3, 3.125, 5}, {3, 0.5, 3, 0.25, 4}, 2);
+  for (const double x : comb.points) ASSERT_EQ(static_cast<double>(static_cast<float>(x)), x);
+  CdtStatistics lazy, full;
+  mesh(comb, lazy);
+  EXPECT_EQ(lazy.steiner_attempts, 1u);
+  EXPECT_EQ(lazy.steiner_points, 0u);
+  comb.points[0] = std::nextafter(comb.points[0], -1.0);  // a double: every segment refined
+  mesh(comb, full);
+  EXPECT_EQ(full.steiner_attempts, 1u);
+  EXPECT_GT(full.steiner_points, 0u) << "the comb's segments are Delaunay: nothing exercised";
+
+  Plc<3> prism = fixtures::twisted_prism(0.5);
+  for (double& x : prism.points) x = static_cast<float>(x);
+  CdtStatistics schonhardt;
+  mesh(prism, schonhardt);
+  EXPECT_GE(schonhardt.steiner_attempts, 2u) << "the prism has no CDT as given";
+  EXPECT_LE(schonhardt.steiner_attempts, 6u) << "lazy refinement fell back to every segment";
+  EXPECT_GT(schonhardt.steiner_points, 0u);
+  std::printf("[ lazy ] comb: 0 Steiner points (every segment: %llu); prism: %llu in %llu refinements\n",
+              static_cast<unsigned long long>(full.steiner_points), static_cast<unsigned long long>(schonhardt.steiner_points),
+              static_cast<unsigned long long>(schonhardt.steiner_attempts));
+}

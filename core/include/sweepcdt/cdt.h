@@ -61,6 +61,9 @@ struct CdtStatistics {
   // triangulated again in cavities (those they disturb and those enclosed by them).
   uint64_t missing_constraints = 0, cavity_tetrahedra = 0;
   uint64_t steiner_points = 0, steiner_rounds = 0;  // the points the result has; refinement rounds (each ends with the facets' flips)
+  // Refinements run: lazy ones (cdt.cpp: segments required where a cavity finds no CDT) and, when
+  // they do not end in a CDT, one of every segment; 0 without Steiner points or coplanar facets.
+  uint64_t steiner_attempts = 0;
   uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
                                          // edge flips that gave each its 2D CDT

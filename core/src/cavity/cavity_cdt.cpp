@@ -1,5 +1,8 @@
 #include "cavity_cdt.h"
 
+#include "sweepcdt/predicates/perturbation.h"
+#include "sweepcdt/validate.h"
+
 #include "../facets.h"
 #include "../gift_wrap.h"
 #include "../sweep/sweep_cdt.h"
@@ -13,10 +16,13 @@ namespace {
 
 // Step 5: the kept simplices, with their adjacency from the Delaunay mesh, and the cavities'
 // simplices (in the PLC's ids), paired by their facets with each other and with the kept facets that
-// face a cavity. Facets on the domain's boundary keep kNone.
+// face a cavity. Facets on the domain's boundary keep kNone. `not_delaunay`, when given, gets the
+// index (among the cavity simplices) of each cavity simplex whose circumsphere holds the apex of a
+// kept simplex across a facet (perturbed, as validate() tests it): when the PLC has no CDT, each
+// cavity can still have one, and this is where they do not fit together.
 template <int D>
 Triangulation<D> assemble(const Plc<D>& plc, const DelaunayMesh& dt, const std::vector<Place>& place,
-                          const std::vector<uint32_t>& cavity_simplices) {
+                          const std::vector<uint32_t>& cavity_simplices, std::vector<uint32_t>* not_delaunay = nullptr) {
   constexpr uint32_t kVertices = D + 1;
   std::vector<uint32_t> renumbered(place.size(), kNone);
   uint32_t kept = 0;
@@ -31,6 +37,12 @@ Triangulation<D> assemble(const Plc<D>& plc, const DelaunayMesh& dt, const std::
     if (first) return;
     tri.neighbors[kVertices * s + i] = other;
     tri.neighbors[other] = kVertices * s + i;
+    if (not_delaunay && s >= kept && other / kVertices < kept) {
+      predicates::Vertices<D + 1> cell;
+      for (uint32_t k = 0; k < kVertices; ++k) cell[k] = {plc.point(simplex[k]), simplex[k]};
+      const uint32_t apex = tri.simplices[other];  // facet `other % kVertices` is opposite that vertex
+      if (predicates::inside_circumsphere<D>(cell, {plc.point(apex), apex})) not_delaunay->push_back(s - kept);
+    }
   };
   for (std::size_t t = 0; t < place.size(); ++t) {
     if (place[t] != Place::Inside) continue;
@@ -59,7 +71,7 @@ Triangulation<D> assemble(const Plc<D>& plc, const DelaunayMesh& dt, const std::
 
 template <int D>
 std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
-                                           const DelaunayMesh* delaunay) {
+                                           const DelaunayMesh* delaunay, std::vector<std::array<uint32_t, 2>>* failed_edges) {
   const std::size_t n = plc.num_points();
   DelaunayMesh computed;
   if (!delaunay) {
@@ -85,22 +97,62 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
   const Cavities<D> cavities = cavity_plcs<D>(plc, dt, constraints.of_facet, constraints.missing, disturbed.first, place);
   if (cavities.reaches_hull) return std::nullopt;
 
+  // With failed_edges, every cavity is swept, and the facets' edges of each that finds no CDT, or
+  // whose CDT does not fit its kept neighbours, are reported.
+  const auto report = [&](const CavityPlc<D>& cavity) {
+    const std::vector<uint32_t>& s = cavity.plc.simplices;
+    for (std::size_t f = 0; f < s.size(); f += D)
+      for (int i = 0; i < D; ++i)
+        for (int j = i + 1; j < D; ++j) failed_edges->push_back({cavity.global[s[f + i]], cavity.global[s[f + j]]});
+  };
   std::vector<uint32_t> cavity_simplices;
-  for (const CavityPlc<D>& cavity : cavities.parts) {
+  std::vector<uint32_t> cavity_of;  // per cavity simplex, with failed_edges: its cavity
+  bool failed = false;
+  for (std::size_t c = 0; c < cavities.parts.size(); ++c) {
+    const CavityPlc<D>& cavity = cavities.parts[c];
     Triangulation<D> part;
     try {
       part = sweep_cdt<D>(cavity.plc, seed_simplex(cavity.plc), options, stats);
     } catch (const NoCdtError&) {
-      return std::nullopt;  // the PLC has no CDT: the whole sweep finds out again and names a witness
+      // The PLC has no CDT: the whole sweep finds out again and names a witness.
+      if (!failed_edges) return std::nullopt;
+      failed = true;
+      report(cavity);
+      continue;
+    }
+    // Without a CDT the sweep can also end with a triangulation that is none (a triangular
+    // bipyramid whose two constraints meet at an edge that is not Delaunay: two tetrahedra, not
+    // locally Delaunay between them); validate() finds that later, for the whole. Lazy refinement
+    // needs the cavity, so it validates each.
+    if (failed_edges) {
+      compute_neighbors(part);
+      if (!validate<D>(part, cavity.plc, ValidationLevel::Full, 1).ok()) {
+        failed = true;
+        report(cavity);
+        continue;
+      }
     }
     for (const uint32_t v : part.simplices) cavity_simplices.push_back(cavity.global[v]);
+    if (failed_edges) cavity_of.insert(cavity_of.end(), part.num_simplices(), static_cast<uint32_t>(c));
   }
-  return assemble<D>(plc, dt, place, cavity_simplices);
+  if (failed) return std::nullopt;
+  if (!failed_edges) return assemble<D>(plc, dt, place, cavity_simplices);
+  std::vector<uint32_t> not_delaunay;
+  Triangulation<D> tri = assemble<D>(plc, dt, place, cavity_simplices, &not_delaunay);
+  if (not_delaunay.empty()) return tri;
+  std::vector<char> reported(cavities.parts.size(), 0);
+  for (const uint32_t k : not_delaunay)
+    if (!reported[cavity_of[k]]) reported[cavity_of[k]] = 1, report(cavities.parts[cavity_of[k]]);
+  return std::nullopt;
 }
 
-template std::optional<Triangulation<2>> cavity_cdt<2>(const Plc<2>&, const Options&, CdtStatistics&, const DelaunayMesh*);
-template std::optional<Triangulation<3>> cavity_cdt<3>(const Plc<3>&, const Options&, CdtStatistics&, const DelaunayMesh*);
-template std::optional<Triangulation<4>> cavity_cdt<4>(const Plc<4>&, const Options&, CdtStatistics&, const DelaunayMesh*);
-template std::optional<Triangulation<5>> cavity_cdt<5>(const Plc<5>&, const Options&, CdtStatistics&, const DelaunayMesh*);
+template std::optional<Triangulation<2>> cavity_cdt<2>(const Plc<2>&, const Options&, CdtStatistics&, const DelaunayMesh*,
+                                                          std::vector<std::array<uint32_t, 2>>*);
+template std::optional<Triangulation<3>> cavity_cdt<3>(const Plc<3>&, const Options&, CdtStatistics&, const DelaunayMesh*,
+                                                          std::vector<std::array<uint32_t, 2>>*);
+template std::optional<Triangulation<4>> cavity_cdt<4>(const Plc<4>&, const Options&, CdtStatistics&, const DelaunayMesh*,
+                                                          std::vector<std::array<uint32_t, 2>>*);
+template std::optional<Triangulation<5>> cavity_cdt<5>(const Plc<5>&, const Options&, CdtStatistics&, const DelaunayMesh*,
+                                                          std::vector<std::array<uint32_t, 2>>*);
 
 }  // namespace sweepcdt::detail

@@ -20,7 +20,10 @@
 // Most closed surfaces are mostly Delaunay already (a jittered sphere of 330k triangles has every
 // triangle in its Delaunay triangulation), so the sweep's work shrinks to the cavities.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "../delaunay/delaunay.h"
 #include "sweepcdt/cdt.h"
@@ -33,9 +36,13 @@ namespace sweepcdt::detail {
 // the whole sweep says so with its witness), or anything it did not expect. The caller then sweeps
 // the whole PLC. Throws CancelledError.
 // `delaunay`: the Delaunay triangulation of plc.points when the caller has it (Steiner refinement
-// keeps one), else it is computed.
+// keeps one), else it is computed. `failed_edges`: when given, every cavity is swept even after one
+// finds no CDT, and the edges of those that do not (their facets' edges, in plc's ids, in no
+// particular order, repeated) are appended, and of those whose CDT does not fit the kept simplices
+// around them (then the PLC has no CDT either): lazy Steiner refinement (cdt.cpp) splits there.
 template <int D>
 std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
-                                           const DelaunayMesh* delaunay = nullptr);
+                                           const DelaunayMesh* delaunay = nullptr,
+                                           std::vector<std::array<uint32_t, 2>>* failed_edges = nullptr);
 
 }  // namespace sweepcdt::detail

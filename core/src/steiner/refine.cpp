@@ -38,7 +38,8 @@ std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options) : options_(options), points_(input.points) {
+  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required)
+      : options_(options), required_(required), points_(input.points) {
     // The Delaunay triangulation needs only the points: given a second thread, it is computed there
     // while the facets are grouped (1.3M triangles: 2.5 s beside 1.2 s).
     if (options_.steiner == SteinerMode::Auto && thread_count(options_.threads) > 1)
@@ -53,6 +54,7 @@ class Refiner {
       flip_facets();
     pieces_.put_in_order();  // already: the rounds end in order
     r_.off_input = facets_off_input();
+    r_.on_segment.assign(on_segment_.begin() + r_.num_input_points, on_segment_.end());
     r_.plc.points = std::move(points_);
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
@@ -96,6 +98,25 @@ class Refiner {
     return u != kNone && strictly_inside_segment<3>(p(u), p(m), p(v));
   }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
+
+  // Whether the piece ab of a segment must be Delaunay: with every segment required, or when it
+  // lies on a required input segment, or is a fold made a segment (or on one, inside a facet).
+  bool is_required(uint32_t a, uint32_t b) const {
+    if (!required_ || fold_segments_.count(edge_key(a, b))) return true;
+    const std::array<uint32_t, 2> s = input_segment_of(a, b);
+    return s[0] == kNone || required_->count(edge_key(s[0], s[1])) > 0;
+  }
+
+  // Whether segment `key`, which is not Delaunay, is split. With some segments required (lazy
+  // refinement, cdt.cpp), one that is not is left as it is when it was not Delaunay the first time
+  // it was looked at (its cavity may have a CDT all the same), but split when it was, so that the
+  // points made for the required ones never take a CDT away where there was one (they would only
+  // show up as new failing cavities, one attempt after another).
+  bool splits(uint64_t key, bool first_look) {
+    if (is_required(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) return true;
+    if (first_look) tolerated_.insert(key);
+    return !tolerated_.count(key);
+  }
 
   // Rounds: split every segment that is not Delaunay, then (pass after pass) those the new points
   // made not Delaunay, looking only near the points each pass changed; then give each facet its 2D
@@ -188,14 +209,14 @@ class Refiner {
   // the list set_up made while the tetrahedralization was computed (most of the scan's time).
   std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) {
     std::vector<uint64_t> split;
-    const auto check = [&](uint64_t key) {
-      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) split.push_back(key);
+    const auto check = [&](uint64_t key, bool first_look) {
+      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key)) && splits(key, first_look)) split.push_back(key);
     };
     if (r_.rounds == 0) {
-      for (const uint64_t key : first_segments_) check(key);
+      for (const uint64_t key : first_segments_) check(key, true);
       first_segments_ = {};
     } else {
-      for_each_segment([&](uint64_t key) { check(key); }, [&](uint32_t a, uint32_t b) { return delaunay.may_have_changed(a, b); });
+      for_each_segment([&](uint64_t key) { check(key, false); }, [&](uint32_t a, uint32_t b) { return delaunay.may_have_changed(a, b); });
     }
     return split;
   }
@@ -229,7 +250,7 @@ class Refiner {
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     std::vector<uint64_t> split;
     for (const uint64_t key : candidates)
-      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) split.push_back(key);
+      if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key)) && splits(key, false)) split.push_back(key);
     return split;
   }
 
@@ -512,6 +533,7 @@ class Refiner {
   }
 
   const Options& options_;
+  const RequiredSegments* required_;  // null: every segment
   std::vector<double> points_;  // first: the helper thread reads it from the start
   std::unique_ptr<DelaunayEdges> first_delaunay_;
   std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
@@ -525,6 +547,7 @@ class Refiner {
   TrianglePieces pieces_{tris_, original_, unflipped_};  // splits them; in order after put_in_order()
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
+  std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at (splits())
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
@@ -532,6 +555,8 @@ class Refiner {
 
 }  // namespace
 
-RefinedPlc refine(const Plc<3>& input, const Options& options) { return Refiner(input, options).run(); }
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required) {
+  return Refiner(input, options, required).run();
+}
 
 }  // namespace sweepcdt::detail

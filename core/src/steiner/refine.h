@@ -40,10 +40,15 @@
 // surfaces with float coordinates most points lie exactly on their segments and make no folds.
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
+// Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
+// segments, and of the segments that were Delaunay when first looked at (the points made for the
+// others must not take a CDT away where there was one); the rest stay as they are, and the cavity
+// sweep decides exactly whether the result has a CDT.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include "../delaunay/delaunay.h"
@@ -61,6 +66,9 @@ struct RefinedPlc {
   // `sweepcdt check` recognises it by: its input segment's ends (their difference exact), else the
   // ends of the piece it split, or a fold's two points.
   std::vector<std::array<uint32_t, 2>> made_from;
+  // Per Steiner point: the input segment it lies on (its ends, the smaller id first), or kNone twice
+  // for a point inside a facet.
+  std::vector<std::array<uint32_t, 2>> on_segment;
   uint64_t rounds = 0, facets = 0, flips = 0;
   // Per refined triangle: its facet holds a Steiner point rounded off its input segment, or one
   // inside the facet, so it may differ from the input's facet by rounding (refined_check.h).
@@ -70,7 +78,13 @@ struct RefinedPlc {
   std::optional<DelaunayMesh> delaunay;
 };
 
-// With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar).
-RefinedPlc refine(const Plc<3>& input, const Options& options);
+// Input segments (edge_key of their ends) whose pieces must be Delaunay; the others are left as they
+// are. Lazy refinement (cdt.cpp) starts with none and adds those of the cavities that find no CDT.
+using RequiredSegments = std::unordered_set<uint64_t>;
+
+// With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar). `required`: only
+// those input segments are split (and the folds and segments that points inside facets need); null:
+// every segment, so that the refined PLC has a CDT by the theorem.
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr);
 
 }  // namespace sweepcdt::detail

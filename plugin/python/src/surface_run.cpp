@@ -90,6 +90,7 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   s["boundary_triangles"] = m.num_boundary();
   s["regions"] = std::set<int32_t>(m.regions.begin(), m.regions.end()).size();
   s["steiner_rounds"] = run.cdt.steiner_rounds;
+  s["steiner_attempts"] = run.cdt.steiner_attempts;
   s["facets_triangulated"] = run.cdt.facets;
   s["facet_flips"] = run.cdt.facet_flips;
   s["queue_pushes"] = run.cdt.queue_pushes;
