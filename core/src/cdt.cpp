@@ -180,10 +180,9 @@ bool all_float(const std::vector<double>& points) {
 std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
                                               detail::RefinedPlc& refined) {
   detail::RequiredSegments required;
-  std::unique_ptr<detail::DelaunayEdges> input_delaunay;  // computed once, copied by each attempt
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
-    refined = detail::refine(plc, options, &required, &input_delaunay);
+    refined = detail::refine(plc, options, &required);
     try {
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {

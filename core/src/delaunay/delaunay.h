@@ -57,9 +57,6 @@ class DelaunayEdges {
   // Triangulates `points`, which must outlive this object; same requirements as above. `inserted`
   // as for delaunay_mesh (it may throw to cancel).
   explicit DelaunayEdges(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
-  // A copy of `other` over `points`, which must outlive it and hold the points `other` inserted
-  // (the same, first); points appended after them are inserted by insert_new_points as usual.
-  DelaunayEdges(const DelaunayEdges& other, const std::vector<double>& points);
   ~DelaunayEdges();
   // Inserts the points appended to `points` since the last call (or the construction), if any.
   void insert_new_points();

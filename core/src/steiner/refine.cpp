@@ -38,13 +38,11 @@ std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, std::unique_ptr<DelaunayEdges>* input_delaunay)
-      : options_(options), required_(required), input_points_(input.points), input_delaunay_(input_delaunay), points_(input.points) {
-    if (input_delaunay_ && *input_delaunay_ && options_.steiner == SteinerMode::Auto)
-      first_delaunay_ = std::make_unique<DelaunayEdges>(**input_delaunay_, points_);
+  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required)
+      : options_(options), required_(required), points_(input.points) {
     // The Delaunay triangulation needs only the points: given a second thread, it is computed there
     // while the facets are grouped (1.3M triangles: 2.5 s beside 1.2 s).
-    else if (options_.steiner == SteinerMode::Auto && thread_count(options_.threads) > 1)
+    if (options_.steiner == SteinerMode::Auto && thread_count(options_.threads) > 1)
       helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
     set_up(input);  // when it throws, helper_ is stopped as it is destroyed
   }
@@ -186,7 +184,6 @@ class Refiner {
       first_delaunay_ = std::make_unique<DelaunayEdges>(points_, [&](std::size_t inserted) {
         if (!report(inserted)) throw CancelledError();
       });
-    if (input_delaunay_ && !*input_delaunay_) *input_delaunay_ = std::make_unique<DelaunayEdges>(*first_delaunay_, input_points_);
     return *first_delaunay_;
   }
 
@@ -537,8 +534,6 @@ class Refiner {
 
   const Options& options_;
   const RequiredSegments* required_;  // null: every segment
-  const std::vector<double>& input_points_;
-  std::unique_ptr<DelaunayEdges>* input_delaunay_;  // refine()'s: the input points' triangulation, kept
   std::vector<double> points_;  // first: the helper thread reads it from the start
   std::unique_ptr<DelaunayEdges> first_delaunay_;
   std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
@@ -560,9 +555,8 @@ class Refiner {
 
 }  // namespace
 
-RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required,
-                  std::unique_ptr<DelaunayEdges>* input_delaunay) {
-  return Refiner(input, options, required, input_delaunay).run();
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required) {
+  return Refiner(input, options, required).run();
 }
 
 }  // namespace sweepcdt::detail

@@ -47,7 +47,6 @@
 #pragma once
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <unordered_set>
 #include <vector>
@@ -85,10 +84,7 @@ using RequiredSegments = std::unordered_set<uint64_t>;
 
 // With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar). `required`: only
 // those input segments are split (and the folds and segments that points inside facets need); null:
-// every segment, so that the refined PLC has a CDT by the theorem. `input_delaunay` (for refining
-// one input again and again): when it holds the Delaunay triangulation of input.points, refinement
-// starts from a copy of it; when it is empty, it gets a copy of the one refinement computes.
-RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr,
-                  std::unique_ptr<DelaunayEdges>* input_delaunay = nullptr);
+// every segment, so that the refined PLC has a CDT by the theorem.
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr);
 
 }  // namespace sweepcdt::detail
