@@ -162,9 +162,9 @@ void take_refined(detail::RefinedPlc& refined, const Options& options, CdtStatis
 // that its points make not Delaunay where it was: steiner/refine.cpp). A cavity without a CDT has a
 // segment that is not Delaunay (the theorem, applied to the cavity's PLC: every other ridge of it is
 // an edge of the Delaunay triangulation), so each attempt requires segments not required before
-// or stops. Returns the validated CDT with its refined PLC, or nullopt when the attempts run out, a
-// refined PLC fails its check, or the cavities all have a CDT that the whole does not: then the
-// caller refines every segment, as before.
+// or stops. Returns the validated CDT with its refined PLC, or nullopt when the attempts run out,
+// refinement fails (a limit, or a refined PLC fails its check), or the cavities all have a CDT that
+// the whole does not: then the caller refines every segment, as before.
 //
 // Only on surfaces with float coordinates (STL, glTF, Draco, most PLY), where a Steiner point lies
 // exactly on its segment: where points are rounded off their segments, the folds they make and the
@@ -182,11 +182,11 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
   detail::RequiredSegments required;
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
-    refined = detail::refine(plc, options, &required);
     try {
+      refined = detail::refine(plc, options, &required);
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
-      return std::nullopt;
+      return std::nullopt;  // a limit, or rounding: refining every segment says so again, or succeeds
     }
     std::vector<std::array<uint32_t, 2>> failed_edges;
     stats.algorithm = Algorithm::CavitySweep;
