@@ -109,9 +109,9 @@ class Refiner {
 
   // Whether segment `key`, which is not Delaunay, is split. With some segments required (lazy
   // refinement, cdt.cpp), one that is not is left as it is when it was not Delaunay the first time
-  // it was looked at (its cavity may have a CDT all the same), but split when it was, so that the
-  // points made for the required ones never take a CDT away where there was one (they would only
-  // show up as new failing cavities, one attempt after another).
+  // it was looked at (its cavity may have a CDT all the same), but split when it was: a segment that
+  // the points made for the required ones broke would otherwise show up as the next failing cavity,
+  // one attempt after another (elbow_fine: more than 6 attempts without this, 2 with it).
   bool splits(uint64_t key, bool first_look) {
     if (is_required(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key))) return true;
     if (first_look) tolerated_.insert(key);

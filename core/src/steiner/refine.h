@@ -41,9 +41,9 @@
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
-// segments, and of the segments that were Delaunay when first looked at (the points made for the
-// others must not take a CDT away where there was one); the rest stay as they are, and the cavity
-// sweep decides exactly whether the result has a CDT.
+// segments, and of the segments that were Delaunay when first looked at but are not after the
+// points made for the required ones; the rest stay as they are, and the cavity sweep decides
+// exactly whether the result has a CDT.
 #pragma once
 #include <array>
 #include <cstdint>
