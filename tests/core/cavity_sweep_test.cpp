@@ -252,8 +252,6 @@ TEST(CavitySweep, BodiesAndPointSets) {
   EXPECT_EQ(stats.cavity_tetrahedra, 0u);
 }
 
-}  // namespace
-
 // With failed_edges, cavity_cdt reports where a cavity finds no CDT (lazy Steiner refinement splits
 // there, cdt.cpp): Schönhardt's prism has none, and its cavity is the whole prism; a box in a box
 // has one, and nothing is reported.
@@ -274,3 +272,5 @@ TEST(CavitySweep, ReportsTheCavitiesWithoutACdt) {
   EXPECT_TRUE(tri.has_value());
   EXPECT_TRUE(failed.empty());
 }
+
+}  // namespace

@@ -329,7 +329,6 @@ TEST(Steiner, OnlyFacetsWithPointsOffThemAreCheckedAgain) {
   EXPECT_NO_THROW(detail::check_refined(r.plc, r.off_input));
 }
 
-
 // Lazy refinement (cdt.cpp) asks refine() for the pieces of some input segments only. Nothing
 // required: no point at all (the facets are only flipped). Every input edge required: the same
 // refined PLC, point for point, as refining every segment.
@@ -375,6 +374,12 @@ TEST(Steiner, LazyRefinementOnFloatSurfaces) {
   mesh(comb, lazy);
   EXPECT_EQ(lazy.steiner_attempts, 1u);
   EXPECT_EQ(lazy.steiner_points, 0u);
+  // Independently: the comb as given has a CDT (coplanar facets, no Steiner points, the whole PLC
+  // swept with the sphere), so no point is the right answer.
+  Options as_given = mesh_defaults();
+  as_given.steiner = SteinerMode::None;
+  as_given.algorithm = Algorithm::SweepSphere;
+  EXPECT_NO_THROW(cdt(comb, as_given));
   comb.points[0] = std::nextafter(comb.points[0], -1.0);  // a double: every segment refined
   mesh(comb, full);
   EXPECT_EQ(full.steiner_attempts, 1u);
