@@ -23,7 +23,11 @@ bool on_segment_2d(P a, P b, P c) {
 }
 
 bool segments_meet_2d(P p, P q, P a, P b) {
-  const Sign o1 = orient2(p, q, a), o2 = orient2(p, q, b), o3 = orient2(a, b, p), o4 = orient2(a, b, q);
+  // a and b strictly on one side of pq's line (or p and q of ab's): no contact, and no more tests.
+  const Sign o1 = orient2(p, q, a), o2 = orient2(p, q, b);
+  if (o1 * o2 == Sign::Positive) return false;
+  const Sign o3 = orient2(a, b, p), o4 = orient2(a, b, q);
+  if (o3 * o4 == Sign::Positive) return false;
   if (o1 * o2 == Sign::Negative && o3 * o4 == Sign::Negative) return true;
   return (o1 == Sign::Zero && on_segment_2d(p, q, a)) || (o2 == Sign::Zero && on_segment_2d(p, q, b)) ||
          (o3 == Sign::Zero && on_segment_2d(a, b, p)) || (o4 == Sign::Zero && on_segment_2d(a, b, q));
@@ -36,7 +40,12 @@ bool consistent(Sign a, Sign b, Sign c) {
   return !(pos && neg);
 }
 
-bool point_in_triangle_2d(P p, P a, P b, P c) { return consistent(orient2(a, b, p), orient2(b, c, p), orient2(c, a, p)); }
+// The third orientation only when the first two do not already disagree.
+bool point_in_triangle_2d(P p, P a, P b, P c) {
+  const Sign s1 = orient2(a, b, p), s2 = orient2(b, c, p);
+  if (s1 * s2 == Sign::Negative) return false;
+  return consistent(s1, s2, orient2(c, a, p));
+}
 
 bool segment_meets_triangle_2d(P p, P q, P a, P b, P c) {
   return point_in_triangle_2d(p, a, b, c) || point_in_triangle_2d(q, a, b, c) || segments_meet_2d(p, q, a, b) ||
@@ -65,6 +74,27 @@ bool coplanar_point_in_triangle(P p, P a, P b, P c) {
   const PlaneProjection pr = projection_of(a, b, c);
   const auto p2 = pr.project(p), a2 = pr.project(a), b2 = pr.project(b), c2 = pr.project(c);
   return point_in_triangle_2d(p2.data(), a2.data(), b2.data(), c2.data());
+}
+
+// Two coplanar triangles without a common vertex, projected one-to-one to 2D (the same projection for
+// both): whether they meet, as closed sets. They are disjoint exactly when the line of one of their
+// six edges has that edge's triangle on one side and the other triangle's three vertices strictly on
+// the other: the separating axis theorem for convex polygons (the edge of the Minkowski difference
+// s - t nearest the origin is a translate of an edge of s or of -t with the same outward normal, so
+// that edge's own line separates). At most 2 + 18 orientations, most pairs of a flat CAD face a few;
+// testing each of the six edges against the other triangle took up to 108.
+bool coplanar_triangles_meet_2d(const std::array<std::array<double, 2>, 3>& s, const std::array<std::array<double, 2>, 3>& t) {
+  const auto an_edge_separates = [](const std::array<std::array<double, 2>, 3>& u, const std::array<std::array<double, 2>, 3>& w) {
+    const Sign inside = orient2(u[0].data(), u[1].data(), u[2].data());  // of every edge's third vertex
+    for (int i = 0; i < 3; ++i) {
+      const P e0 = u[i].data(), e1 = u[(i + 1) % 3].data();
+      bool outside = true;
+      for (int k = 0; k < 3 && outside; ++k) outside = orient2(e0, e1, w[k].data()) == -inside;
+      if (outside) return true;
+    }
+    return false;
+  };
+  return !an_edge_separates(s, t) && !an_edge_separates(t, s);
 }
 
 // A triangle with what the segment tests against it reuse: its vertices and, once asked for, the
@@ -145,7 +175,12 @@ bool improper_3d(std::array<P, 3> a, std::array<uint32_t, 3> ida, std::array<P, 
       const auto one_side = [](const std::array<Sign, 3>& s) { return s[0] != Sign::Zero && s[0] == s[1] && s[1] == s[2]; };
       const std::array<Sign, 3> sa{sides(tb, a[0]), sides(tb, a[1]), sides(tb, a[2])};
       if (one_side(sa)) return false;
-      const std::array<Sign, 3> sb = all_zero(sa) ? sa : std::array<Sign, 3>{sides(ta, b[0]), sides(ta, b[1]), sides(ta, b[2])};
+      if (all_zero(sa)) {  // coplanar: any contact in their common plane
+        const PlaneProjection pr = ta.projection();
+        return coplanar_triangles_meet_2d({pr.project(a[0]), pr.project(a[1]), pr.project(a[2])},
+                                          {pr.project(b[0]), pr.project(b[1]), pr.project(b[2])});
+      }
+      const std::array<Sign, 3> sb{sides(ta, b[0]), sides(ta, b[1]), sides(ta, b[2])};
       if (one_side(sb)) return false;
       return segment_meets_triangle_3d(a[0], a[1], tb, sa[0], sa[1]) ||
              segment_meets_triangle_3d(a[1], a[2], tb, sa[1], sa[2]) ||

@@ -19,14 +19,11 @@ bool degenerate(const std::array<const double*, D>& f) {
   return true;
 }
 
+// Random pairs of simplices on `points` (D coordinates each), sharing vertices often.
 template <int D>
-void compare_with_lp(int grid, int cases, uint64_t seed) {
+void compare_with_lp_on(const std::vector<double>& points, int cases, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::vector<double> points;
-  int count = 1;
-  for (int k = 0; k < D; ++k) count *= grid;
-  for (int i = 0; i < count; ++i)
-    for (int k = 0, r = i; k < D; ++k, r /= grid) points.push_back(r % grid);
+  const uint32_t count = static_cast<uint32_t>(points.size() / D);
   std::uniform_int_distribution<uint32_t> pick(0, count - 1);
   int improper = 0, tested = 0;
   while (tested < cases) {
@@ -57,8 +54,31 @@ void compare_with_lp(int grid, int cases, uint64_t seed) {
   EXPECT_LT(improper, cases - cases / 20);
 }
 
+template <int D>
+void compare_with_lp(int grid, int cases, uint64_t seed) {
+  std::vector<double> points;
+  int count = 1;
+  for (int k = 0; k < D; ++k) count *= grid;
+  for (int i = 0; i < count; ++i)
+    for (int k = 0, r = i; k < D; ++k, r /= grid) points.push_back(r % grid);
+  compare_with_lp_on<D>(points, cases, seed);
+}
+
+// Every triangle in one plane (a 5 x 5 grid on it): the coplanar pairs of flat CAD faces, which have
+// a 2D test of their own (separating edges), with and without shared vertices.
+void compare_coplanar_with_lp(bool oblique, int cases, uint64_t seed) {
+  std::vector<double> points;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) points.insert(points.end(), {double(i), double(j), oblique ? 2.0 * i - 3.0 * j + 1 : 7.0});
+  compare_with_lp_on<3>(points, cases, seed);
+}
+
 TEST(SimplexIntersection, Segments2DAgreeWithLp) { compare_with_lp<2>(4, 3000, 1); }
 TEST(SimplexIntersection, Triangles3DAgreeWithLp) { compare_with_lp<3>(3, 3000, 2); }
+TEST(SimplexIntersection, CoplanarTrianglesAgreeWithLp) {
+  compare_coplanar_with_lp(false, 3000, 5);
+  compare_coplanar_with_lp(true, 3000, 6);
+}
 // D >= 4: the shortcuts before the linear program (disjoint boxes, one side of a hyperplane).
 TEST(SimplexIntersection, Simplices4DAgreeWithLp) { compare_with_lp<4>(3, 1500, 3); }
 TEST(SimplexIntersection, Simplices5DAgreeWithLp) { compare_with_lp<5>(3, 800, 4); }

@@ -69,6 +69,37 @@ void equal_points_case() {
 TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
 TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
 
+// Points sharing one coordinate exactly (an axis-parallel line or plane: orientation.cpp's
+// shared-coordinate fast path, exactly zero), or with that coordinate of one point moved by one ulp
+// (not zero: the exact stage decides), random and grid coordinates, at every scale, against the
+// rational reference; insphere, which the path does not touch, is compared on the same points.
+template <int D>
+void shared_coordinate_case() {
+  Rng rng(0x5ca7e000 + D);
+  FailureBudget budget;
+  int zeros = 0, cases = 0;
+  for (int n = 0; n < 900; ++n) {
+    std::array<Point<D>, D + 2> pts;
+    for (auto& p : pts) p = n % 2 ? random_point<D>(rng) : grid_point<D>(rng, -4, 4);
+    const int k = uniform_int(rng, 0, D - 1);
+    for (auto& p : pts) p[k] = pts[0][k];
+    const double s = kScales[n % std::size(kScales)];
+    for (auto& p : pts) p = scaled<D>(p, s);
+    const int mode = n % 3;  // 0: shared, 1: one ulp up, 2: one ulp down (in one of the simplex's points)
+    if (mode != 0) {
+      const int j = uniform_int(rng, 0, D);
+      pts[j][k] = std::nextafter(pts[j][k], mode == 1 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+    }
+    check_orient_insphere<D>(pts, budget, zeros);
+    ++cases;
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, cases / 4) << "too few exact zeros: " << zeros << " of " << cases;
+}
+
+TEST(FastPath, SharedCoordinateOrient2) { shared_coordinate_case<2>(); }
+TEST(FastPath, SharedCoordinateOrient3) { shared_coordinate_case<3>(); }
+
 // Case n of the triples below: points 0..2 a, b, c (c on ab or one ulp off it), the rest random.
 template <std::size_t N>
 std::array<Point<3>, N> steiner_like_triple(Rng& rng, int n) {

@@ -69,6 +69,24 @@ inline bool has_equal_points(const std::array<const double*, N>& p, int dim) {
   return false;
 }
 
+// An exact-zero fast path of orient (2D, 3D): all points with one coordinate exactly equal lie in
+// an axis-parallel hyperplane, so the difference column of that axis is zero and so is the
+// determinant. The commonest exact zero of flat CAD faces — the self-intersection check's coplanar
+// triangle pairs on faces with z = const, and the 2D tests in their projections — which the
+// fixed-width exact stage otherwise computes in full (its dry run alone was 14% of flange_fine.stl).
+template <std::size_t N>
+inline bool share_a_coordinate(const std::array<const double*, N>& p, int dim) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (int k = 0; k < dim; ++k)
+      if (!std::isfinite(p[i][k])) return false;
+  for (int k = 0; k < dim; ++k) {
+    bool equal = true;
+    for (std::size_t i = 1; i < N && equal; ++i) equal = p[i][k] == p[0][k];
+    if (equal) return true;
+  }
+  return false;
+}
+
 // The second exact-zero fast path of orient3: three of the four points on one line (then the four
 // are coplanar). Steiner points split segments at parameters of few bits (steiner_point.h), so on
 // float-coordinate surfaces most lie exactly on their segments, and the star sweeps of their
@@ -146,14 +164,14 @@ Sign orient2(const Coords<3>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  if (has_equal_points(p, 2)) return detail::count_filtered(), Sign::Zero;
+  if (has_equal_points(p, 2) || share_a_coordinate(p, 2)) return detail::count_filtered(), Sign::Zero;
   if (const auto sign = detail::orient2_small_range(p)) return detail::count_exact(), *sign;
   return detail::exact_sign(OrientFormula<2>{p});
 }
 
 // The stages after a failed filter, out of line so the filters stay small where they are inlined.
 [[gnu::noinline]] Sign orient3_exact(const Coords<4>& p) {
-  if (has_equal_points(p, 3) || has_collinear_triple(p)) return detail::count_filtered(), Sign::Zero;
+  if (share_a_coordinate(p, 3) || has_equal_points(p, 3) || has_collinear_triple(p)) return detail::count_filtered(), Sign::Zero;
   if (const auto sign = detail::orient3_small_range(p)) return detail::count_exact(), *sign;
   return detail::exact_sign(OrientFormula<3>{p});
 }
