@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <gmpxx.h>
@@ -303,6 +304,52 @@ TEST(Steiner, PointsOnASegmentAreSplitsOfItsInputEnds) {
               refined.num_points() - n, refined.num_points() - n - from_pieces - elsewhere, deepest, from_pieces, elsewhere);
   EXPECT_GE(deepest, 4) << "a segment split again and again, each point from its input ends";
   EXPECT_GT(from_pieces, 0u) << "segments whose difference rounds are split piece by piece";
+}
+
+// On float surfaces a segment's difference is exact, so a point at parameter t lies exactly on it
+// when u + t (v - u) comes out exact; refine takes the nearest t on a fine enough grid that does
+// (refine.cpp: parameter_exactly_on). A part placed at an angle with a vertex near the origin, so
+// that small coordinates sit beside large ones and a 20-bit t times a difference needs more than 53
+// bits: every point on a segment lies exactly on it (checked in rationals; before, the point on
+// segment 25-26 was rounded off it), so no facet holds a point off its input (`off_input`).
+TEST(Steiner, PointsOnFloatSegmentsLieExactlyOnThem) {
+  Plc<3> comb = fixtures::extruded_columns({0, 1, 1.25, 3, 3.125, 5}, {3, 0.5, 3, 0.25, 4}, 2);
+  const double c = std::cos(0.4), s = std::sin(0.4);  // about (1, 1, 1) / sqrt(3), by Rodrigues
+  const double k = 1 / std::sqrt(3.0), r[3][3] = {{c + k * k * (1 - c), k * k * (1 - c) - k * s, k * k * (1 - c) + k * s},
+                                                 {k * k * (1 - c) + k * s, c + k * k * (1 - c), k * k * (1 - c) - k * s},
+                                                 {k * k * (1 - c) - k * s, k * k * (1 - c) + k * s, c + k * k * (1 - c)}};
+  for (std::size_t i = 0; i < comb.num_points(); ++i) {
+    double* p = &comb.points[3 * i];
+    const double x[3] = {p[0] - 1.25 + 1e-3, p[1] - 0.5 - 2e-3, p[2] - 1 + 5e-4};  // a vertex near the origin
+    for (int a = 0; a < 3; ++a) p[a] = static_cast<float>(40 * (r[a][0] * x[0] + r[a][1] * x[1] + r[a][2] * x[2]));
+  }
+  const detail::RefinedPlc refined = detail::refine(comb, mesh_defaults());  // every segment
+  const uint32_t n = refined.num_input_points;
+  std::size_t on_segments = 0;
+  for (uint32_t m = n; m < refined.plc.num_points(); ++m) {
+    const auto [a, b] = refined.on_segment[m - n];
+    if (a == kNone) continue;
+    ++on_segments;
+    const double* pa = refined.plc.point(a);
+    const double* pb = refined.plc.point(b);
+    const double* pm = refined.plc.point(m);
+    // m = a + s (b - a) for one rational s in (0, 1), coordinate by coordinate.
+    std::optional<mpq_class> along;
+    for (int i = 0; i < 3; ++i) {
+      const mpq_class d = mpq_class(pb[i]) - mpq_class(pa[i]), off = mpq_class(pm[i]) - mpq_class(pa[i]);
+      if (d == 0) {
+        ASSERT_EQ(off, 0) << "Steiner point " << m << " is off its segment " << a << " " << b;
+        continue;
+      }
+      const mpq_class t = off / d;
+      if (along) ASSERT_EQ(*along, t) << "Steiner point " << m << " is off its segment " << a << " " << b;
+      along = t;
+    }
+    ASSERT_TRUE(along && *along > 0 && *along < 1) << "Steiner point " << m << " is not inside its segment";
+  }
+  std::printf("[ turned comb ] %zu Steiner points, %zu on segments\n", refined.plc.num_points() - n, on_segments);
+  EXPECT_GT(on_segments, 20u) << "too few points to exercise the rounding";
+  EXPECT_TRUE(std::none_of(refined.off_input.begin(), refined.off_input.end(), [](char off) { return off; }));
 }
 
 // The refined PLC is checked again only where rounding may have changed it (refined_check.h): the
