@@ -41,60 +41,51 @@ void check_orient_insphere(const std::array<Point<D>, D + 2>& pts, FailureBudget
     ADD_FAILURE() << "insphere<" << D << "> expected " << sign_name(ei) << "\n" << dump<D>(all);
 }
 
-// Random points with one copied onto another (an exact zero the fast path decides), or the copy
-// moved by one ulp in one coordinate (not zero: the exact stage decides), at every scale.
-template <int D>
-void equal_points_case() {
-  Rng rng(0xfa570000 + D);
+// Random and grid points that `degenerate(pts, rng)` makes an exact zero of one of the fast paths,
+// returning a point and a coordinate of it; in two cases of three that coordinate is then moved by
+// one ulp up or down (no longer degenerate: the exact stage decides). At every scale, orient and
+// insphere against the rational reference.
+template <int D, class Degenerate>
+void nudged_degeneracies(uint32_t seed, int cases, Degenerate&& degenerate) {
+  Rng rng(seed);
   FailureBudget budget;
-  int zeros = 0, cases = 0;
-  for (int n = 0; n < 600; ++n) {
+  int zeros = 0;
+  for (int n = 0; n < cases; ++n) {
     std::array<Point<D>, D + 2> pts;
     for (auto& p : pts) p = n % 2 ? random_point<D>(rng) : grid_point<D>(rng, -4, 4);
-    const int i = uniform_int(rng, 0, D + 1), j = (i + uniform_int(rng, 1, D + 1)) % (D + 2);
-    pts[j] = pts[i];
-    const int mode = n % 3;  // 0: equal, 1: one ulp up, 2: one ulp down
-    const int k = uniform_int(rng, 0, D - 1);
+    const auto [j, k] = degenerate(pts, rng);
     const double s = kScales[n % std::size(kScales)];
     for (auto& p : pts) p = scaled<D>(p, s);
-    if (mode != 0)
-      pts[j][k] = std::nextafter(pts[j][k], mode == 1 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+    const double inf = std::numeric_limits<double>::infinity();
+    if (const int mode = n % 3; mode != 0) pts[j][k] = std::nextafter(pts[j][k], mode == 1 ? inf : -inf);
     check_orient_insphere<D>(pts, budget, zeros);
-    ++cases;
   }
   EXPECT_EQ(budget.failures, 0);
   EXPECT_GT(zeros, cases / 4) << "too few exact zeros: " << zeros << " of " << cases;
 }
 
+// One point copied onto another: orient and insphere are zero (the equal-points fast path).
+template <int D>
+void equal_points_case() {
+  nudged_degeneracies<D>(0xfa570000 + D, 600, [](std::array<Point<D>, D + 2>& pts, Rng& rng) {
+    const int i = uniform_int(rng, 0, D + 1), j = (i + uniform_int(rng, 1, D + 1)) % (D + 2);
+    pts[j] = pts[i];
+    return std::pair{j, uniform_int(rng, 0, D - 1)};
+  });
+}
+
 TEST(FastPath, EqualPointsOrientInsphere2) { equal_points_case<2>(); }
 TEST(FastPath, EqualPointsOrientInsphere3) { equal_points_case<3>(); }
 
-// Points sharing one coordinate exactly (an axis-parallel line or plane: orientation.cpp's
-// shared-coordinate fast path, exactly zero), or with that coordinate of one point moved by one ulp
-// (not zero: the exact stage decides), random and grid coordinates, at every scale, against the
-// rational reference; insphere, which the path does not touch, is compared on the same points.
+// Every point with one coordinate equal (an axis-parallel line or plane): orient is zero (the
+// shared-coordinate fast path); the nudge moves that coordinate of one of the simplex's points.
 template <int D>
 void shared_coordinate_case() {
-  Rng rng(0x5ca7e000 + D);
-  FailureBudget budget;
-  int zeros = 0, cases = 0;
-  for (int n = 0; n < 900; ++n) {
-    std::array<Point<D>, D + 2> pts;
-    for (auto& p : pts) p = n % 2 ? random_point<D>(rng) : grid_point<D>(rng, -4, 4);
+  nudged_degeneracies<D>(0x5ca7e000 + D, 900, [](std::array<Point<D>, D + 2>& pts, Rng& rng) {
     const int k = uniform_int(rng, 0, D - 1);
     for (auto& p : pts) p[k] = pts[0][k];
-    const double s = kScales[n % std::size(kScales)];
-    for (auto& p : pts) p = scaled<D>(p, s);
-    const int mode = n % 3;  // 0: shared, 1: one ulp up, 2: one ulp down (in one of the simplex's points)
-    if (mode != 0) {
-      const int j = uniform_int(rng, 0, D);
-      pts[j][k] = std::nextafter(pts[j][k], mode == 1 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
-    }
-    check_orient_insphere<D>(pts, budget, zeros);
-    ++cases;
-  }
-  EXPECT_EQ(budget.failures, 0);
-  EXPECT_GT(zeros, cases / 4) << "too few exact zeros: " << zeros << " of " << cases;
+    return std::pair{uniform_int(rng, 0, D), k};
+  });
 }
 
 TEST(FastPath, SharedCoordinateOrient2) { shared_coordinate_case<2>(); }
