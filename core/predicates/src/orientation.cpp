@@ -164,7 +164,7 @@ Sign orient2(const Coords<3>& p) {
     if (det > bound) return detail::count_filtered(), Sign::Positive;
     if (det < -bound) return detail::count_filtered(), Sign::Negative;
   }
-  if (has_equal_points(p, 2) || share_a_coordinate(p, 2)) return detail::count_filtered(), Sign::Zero;
+  if (share_a_coordinate(p, 2) || has_equal_points(p, 2)) return detail::count_filtered(), Sign::Zero;
   if (const auto sign = detail::orient2_small_range(p)) return detail::count_exact(), *sign;
   return detail::exact_sign(OrientFormula<2>{p});
 }

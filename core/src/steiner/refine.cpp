@@ -512,13 +512,12 @@ class Refiner {
   // flips and fold points, and bend the facets the deletion pass must then unbend: on float surfaces
   // placed at an angle, where coordinates near 0 sit beside large ones, 1% of the points of
   // plate_with_holes_fine came out off their segments, which led to 14 rounds and 1254 points off
-  // their segments or inside facets (none now: one round). When no grid fine enough has a point
-  // inside the piece (no coarser one can: its points are the finer grid's), t stays, rounded as
-  // before.
-  // Within a 512th of the piece the split rule still holds, near enough (its shells agree to 2^-20
-  // of the piece: refine.h). On float coordinates a few bits fewer suffice; on double coordinates
-  // an exact point is mostly a half or a quarter of the piece, which ignores the rule: tried without
-  // the bound, the noisy CAD parts kept up to 17% more points.
+  // their segments or inside facets (none now: one round). Within a 512th of the piece the split
+  // rule still holds, near enough (its shells agree to 2^-20 of the piece: refine.h); on float
+  // coordinates a few bits fewer suffice, while on double coordinates an exact point is mostly a half
+  // or a quarter of the piece, which ignores the rule (without the bound the noisy CAD parts kept up
+  // to 17% more points). When no grid that fine has a point inside the piece (no coarser one can: its
+  // points are the finer grid's), t stays, rounded as before.
   static constexpr double kLargestShift = 0x1p-9;
   static double parameter_exactly_on(const double* u, const double* v, double t, double ta, double tb) {
     if (exact_point_on_segment(u, v, t)) return t;
@@ -536,15 +535,19 @@ class Refiner {
   }
   // Whether every coordinate of point_on_segment(u, v, t) is exact, v - u being exact: the product
   // exact (its FMA remainder zero, away from underflow, where a remainder can vanish by rounding)
-  // and the sum exact (TwoSum's error zero).
+  // and the sum exact.
   static bool exact_point_on_segment(const double* u, const double* v, double t) {
     for (int k = 0; k < 3; ++k) {
       const double d = v[k] - u[k], product = t * d;
       if (d != 0 && (std::fabs(product) < 0x1p-900 || std::fma(t, d, -product) != 0)) return false;
-      const double sum = u[k] + product, back = sum - u[k];
-      if ((u[k] - (sum - back)) + (product - back) != 0) return false;
+      if (!sum_is_exact(u[k], product)) return false;
     }
     return true;
+  }
+  // Whether a + b is exact in double: Knuth's TwoSum, whose rounding error is itself exact, is zero.
+  static bool sum_is_exact(double a, double b) {
+    const double sum = a + b, back = sum - a;
+    return (a - (sum - back)) + (b - back) == 0;
   }
 
   // Whether v - u is exact in double in every coordinate (Knuth's TwoSum: the rounding error of
@@ -552,10 +555,8 @@ class Refiner {
   // that is not uv — one that can pass exactly through another vertex that uv misses, so that
   // splitting never makes the segment Delaunay (Steiner.SplitPointThatRoundsOntoAnotherPoint).
   static bool exact_difference(const double* u, const double* v) {
-    for (int k = 0; k < 3; ++k) {
-      const double d = v[k] - u[k], back = d - v[k];
-      if ((v[k] - (d - back)) + (-u[k] - back) != 0) return false;
-    }
+    for (int k = 0; k < 3; ++k)
+      if (!sum_is_exact(v[k], -u[k])) return false;
     return true;
   }
 

@@ -36,8 +36,10 @@
 // facets' folds. (Making such folds segments, as before, refined facets uniformly: pipe_tee_fine.stl
 // and gearwheel_ascii.stl ran past the point budget.) When no fold gets a point, the folds become
 // segments as a last resort. The shell distance is rounded to 20 significant bits of the piece
-// split, and points are made from the input segment's ends (sweepcdt/steiner_point.h), so on
-// surfaces with float coordinates most points lie exactly on their segments and make no folds.
+// split, points are made from the input segment's ends (sweepcdt/steiner_point.h), and where such a
+// point would still round off its segment (coordinates near 0 beside large ones) its t moves by at
+// most a 512th of the piece to where it comes out exact (refine.cpp: parameter_exactly_on), so on
+// surfaces with float coordinates the points lie exactly on their segments and make no folds.
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
