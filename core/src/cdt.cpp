@@ -153,6 +153,22 @@ void take_refined(detail::RefinedPlc& refined, const Options& options, CdtStatis
   stats.seconds_setup += clock.lap();
 }
 
+// The refined PLC by the cavity sweep alone (cavity/cavity_cdt.h), validated; nullopt, with the edges
+// of the cavities that find no CDT in `failed_edges`, when one does not (or the whole fails
+// validation: then it has no CDT either).
+std::optional<Triangulation<3>> sweep_cavities(const detail::RefinedPlc& refined, const Options& options, CdtStatistics& stats,
+                                               Stopwatch& clock, std::vector<std::array<uint32_t, 2>>* failed_edges) {
+  stats.algorithm = Algorithm::CavitySweep;
+  std::optional<Triangulation<3>> tri =
+      detail::cavity_cdt<3>(refined.plc, options, stats, refined.delaunay ? &*refined.delaunay : nullptr, failed_edges);
+  if (!tri) return std::nullopt;
+  try {
+    return finish(std::move(*tri), refined.plc, options, stats, clock);
+  } catch (const NoCdtError&) {
+    return std::nullopt;
+  }
+}
+
 // Lazy Steiner refinement (issue 13; the cavity sweep only). Splitting every segment until it is
 // Delaunay (the CDT theorem's premise) is far more than a CDT of the domain needs: a vertex that
 // encroaches on a segment from outside the domain, or across a face flat up to rounding, often leaves
@@ -161,10 +177,12 @@ void take_refined(detail::RefinedPlc& refined, const Options& options, CdtStatis
 // are required from then on, and the refinement runs again with them (splitting, too, any segment
 // that its points make not Delaunay where it was: steiner/refine.cpp). A cavity without a CDT has a
 // segment that is not Delaunay (the theorem, applied to the cavity's PLC: every other ridge of it is
-// an edge of the Delaunay triangulation), so each attempt requires segments not required before
-// or stops. Returns the validated CDT with its refined PLC, or nullopt when the attempts run out,
-// refinement fails (a limit, or a refined PLC fails its check), or the cavities all have a CDT that
-// the whole does not: then the caller refines every segment, as before.
+// an edge of the Delaunay triangulation), or a fold that is not: the folds are left as they are
+// (refine_every_segment says why) until an attempt requires no new segment, then made Delaunay;
+// otherwise each attempt requires segments not required before or stops. Returns the validated CDT with its
+// refined PLC, or nullopt when the attempts run out, refinement fails (a limit, or a refined PLC
+// fails its check), or the cavities all have a CDT that the whole does not: then the caller refines
+// every segment, as before.
 //
 // Only on surfaces with float coordinates (STL, glTF, Draco, most PLY), where a Steiner point lies
 // exactly on its segment: where points are rounded off their segments, the folds they make and the
@@ -180,23 +198,17 @@ bool all_float(const std::vector<double>& points) {
 std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
                                               detail::RefinedPlc& refined) {
   detail::RequiredSegments required;
+  detail::Folds folds = detail::Folds::LeftAsTheyAre;
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
     try {
-      refined = detail::refine(plc, options, &required);
+      refined = detail::refine(plc, options, &required, folds);
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
       return std::nullopt;  // a limit, or rounding: refining every segment says so again, or succeeds
     }
     std::vector<std::array<uint32_t, 2>> failed_edges;
-    stats.algorithm = Algorithm::CavitySweep;
-    if (std::optional<Triangulation<3>> tri = detail::cavity_cdt<3>(refined.plc, options, stats, refined.delaunay ? &*refined.delaunay : nullptr, &failed_edges)) {
-      try {
-        return finish(std::move(*tri), refined.plc, options, stats, clock);
-      } catch (const NoCdtError&) {
-        return std::nullopt;
-      }
-    }
+    if (std::optional<Triangulation<3>> tri = sweep_cavities(refined, options, stats, clock, &failed_edges)) return tri;
     const std::size_t before = required.size();
     const uint32_t n = refined.num_input_points;
     for (const auto& [a, b] : failed_edges) {
@@ -204,8 +216,41 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
       for (const uint32_t v : {a, b})
         if (v >= n && refined.on_segment[v - n][0] != kNone) required.insert(detail::edge_key(refined.on_segment[v - n][0], refined.on_segment[v - n][1]));
     }
-    if (required.size() == before) return std::nullopt;
+    if (required.size() > before) continue;
+    if (folds == detail::Folds::MadeDelaunay || refined.folds_left == 0) return std::nullopt;
+    folds = detail::Folds::MadeDelaunay;
   }
+  return std::nullopt;
+}
+
+// Every segment refined, first with the folds left as they are. A split point rounded off its
+// segment (double coordinates: ASCII STL, OBJ, OFF) bends the facets at the edges from it, and the
+// CDT theorem's premise wants those folds Delaunay too; but the CDT often does without: on an
+// OpenSCAD thread exported as ASCII STL, 20869 folds were not Delaunay after the segments' 59546
+// points, making them so took 9 more rounds and 91270 points (the deletion pass then removed 126813
+// of the 150816, in 21 s), and the cavity sweep found the CDT of the PLC without them (7 s, 21903
+// points kept). The algorithm decides exactly — the cavity sweep by its cavities alone (one without
+// a CDT means the whole has none), the others by sweeping — and when it finds no CDT the folds are
+// made Delaunay after all: nullopt, with `refined` refined again, which the caller triangulates (as
+// it does when no fold was left, the theorem's premise holding already).
+std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
+                                                     detail::RefinedPlc& refined) {
+  ++stats.steiner_attempts;
+  refined = detail::refine(plc, options, nullptr, detail::Folds::LeftAsTheyAre);
+  take_refined(refined, options, stats, clock);
+  if (refined.folds_left == 0) return std::nullopt;
+  if (options.algorithm == Algorithm::CavitySweep) {
+    if (std::optional<Triangulation<3>> tri = sweep_cavities(refined, options, stats, clock, nullptr)) return tri;
+  } else {
+    try {
+      return triangulate(refined.plc, options, stats, clock);
+    } catch (const NoCdtError&) {
+      // the folds are needed
+    }
+  }
+  ++stats.steiner_attempts;
+  refined = detail::refine(plc, options);
+  take_refined(refined, options, stats, clock);
   return std::nullopt;
 }
 
@@ -218,18 +263,21 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
   if constexpr (D == 3) {
     if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
       detail::RefinedPlc refined;
-      std::optional<Triangulation<3>> lazy;
-      if (options.steiner == SteinerMode::Auto && options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
-        lazy = refine_lazily(plc, options, stats, clock, refined);
-      if (!lazy) {
+      std::optional<Triangulation<3>> swept;  // found while refining
+      if (options.steiner == SteinerMode::Auto) {
+        if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points)) swept = refine_lazily(plc, options, stats, clock, refined);
+        if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined);
+      } else {
         ++stats.steiner_attempts;
         refined = detail::refine(plc, options);
         take_refined(refined, options, stats, clock);
+      }
+      if (!swept) {
         // Without Steiner points the refined PLC has the input's points, and their tetrahedralization.
         if (refined.delaunay) delaunay = &*refined.delaunay;
         else if (!refined.steiner_on.empty()) delaunay = nullptr;
       }
-      Triangulation<3> tri = lazy ? std::move(*lazy) : triangulate(refined.plc, options, stats, clock, delaunay);
+      Triangulation<3> tri = swept ? std::move(*swept) : triangulate(refined.plc, options, stats, clock, delaunay);
       refined.delaunay.reset();
       tri.num_input_points = refined.num_input_points;
       tri.steiner_on = std::move(refined.steiner_on);

@@ -443,3 +443,41 @@ TEST(Steiner, LazyRefinementOnFloatSurfaces) {
               static_cast<unsigned long long>(full.steiner_points), static_cast<unsigned long long>(schonhardt.steiner_points),
               static_cast<unsigned long long>(schonhardt.steiner_attempts));
 }
+
+// A split point rounded off its segment bends the facets at the edges from it (folds). The CDT
+// theorem's premise wants those folds Delaunay too, but the CDT often does without: the cavity sweep
+// first tries the refined PLC with its folds left as they are (cdt.cpp: refine_every_segment) and
+// decides exactly; when a cavity finds no CDT, refinement runs again and makes them Delaunay. Thin
+// fins with CAD noise (double coordinates, so every segment is refined) leave folds that are not
+// Delaunay. With one noise (seed 7) the CDT does without them: one refinement, far fewer points.
+// With another (seed 2) it does not: a second refinement, the points of the theorem's premise. Both
+// results are validated CDTs of their refined PLCs, and each refined PLC is refine()'s own.
+TEST(Steiner, FoldsLeftAsTheyAreUnlessTheCdtNeedsThem) {
+  Options options = mesh_defaults();
+  options.remove_steiner_points = false;  // compare what refinement added
+  const auto mesh = [&](const Plc<3>& plc, const detail::RefinedPlc& expected, uint64_t attempts) {
+    CdtStatistics stats;
+    Options counted = options;
+    counted.statistics = &stats;
+    Plc<3> triangulated;
+    const Triangulation<3> tri = cdt(plc, counted, &triangulated);
+    EXPECT_TRUE(validate_triangulated(tri, triangulated).ok());
+    EXPECT_EQ(stats.steiner_attempts, attempts);
+    EXPECT_EQ(triangulated.points, expected.plc.points);
+    EXPECT_EQ(triangulated.simplices, expected.plc.simplices);
+  };
+  const Plc<3> without = sweepcdt::testing::noisy_fins();  // seed 7
+  const detail::RefinedPlc left = detail::refine(without, options, nullptr, detail::Folds::LeftAsTheyAre);
+  const detail::RefinedPlc made = detail::refine(without, options);
+  ASSERT_GT(left.folds_left, 0u) << "no fold is left not Delaunay: nothing exercised";
+  EXPECT_EQ(made.folds_left, 0u);
+  EXPECT_LT(left.steiner_on.size(), made.steiner_on.size());
+  mesh(without, left, 1);
+
+  const Plc<3> with = sweepcdt::testing::noisy_fins(2);
+  const detail::RefinedPlc needed = detail::refine(with, options);
+  ASSERT_GT(detail::refine(with, options, nullptr, detail::Folds::LeftAsTheyAre).folds_left, 0u);
+  mesh(with, needed, 2);
+  std::printf("[ folds ] fins, seed 7: %llu folds not Delaunay left, %zu Steiner points (folds made Delaunay: %zu); seed 2: %zu\n",
+              static_cast<unsigned long long>(left.folds_left), left.steiner_on.size(), made.steiner_on.size(), needed.steiner_on.size());
+}

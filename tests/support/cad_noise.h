@@ -32,8 +32,9 @@ inline Plc<3> with_cad_noise(Plc<3> plc, double fraction, uint64_t seed) {
 }
 
 // Four thin fins (fixtures::extruded_columns) with CAD noise on half the coordinates: Steiner points
-// made from their segments' ends and from pieces, folds, points rounded off their segments.
-inline Plc<3> noisy_fins() {
+// made from their segments' ends and from pieces, folds, points rounded off their segments. `seed`
+// picks the noise.
+inline Plc<3> noisy_fins(uint64_t seed = 7) {
   std::vector<double> xs{0, 1}, tops{0.2};
   for (int fin = 0; fin < 4; ++fin) {
     xs.push_back(xs.back() + 0.02);
@@ -41,7 +42,7 @@ inline Plc<3> noisy_fins() {
     xs.push_back(xs.back() + 0.2);
     tops.push_back(0.2 + 0.01 * fin);
   }
-  return with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  return with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, seed);
 }
 
 }  // namespace sweepcdt::testing

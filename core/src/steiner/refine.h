@@ -45,7 +45,9 @@
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
 // segments, and of the segments that were Delaunay when first looked at but are not after the
 // points made for the required ones; the rest stay as they are, and the cavity sweep decides
-// exactly whether the result has a CDT.
+// exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp, the cavity sweep's first
+// tries) likewise stops once the segments are Delaunay and the facets flipped: the folds that are
+// still not Delaunay get no points, and the cavity sweep decides whether the CDT needs them.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -72,6 +74,7 @@ struct RefinedPlc {
   // for a point inside a facet.
   std::vector<std::array<uint32_t, 2>> on_segment;
   uint64_t rounds = 0, facets = 0, flips = 0;
+  uint64_t folds_left = 0;  // folds not Delaunay left as they are (Folds::LeftAsTheyAre)
   // Per refined triangle: its facet holds a Steiner point rounded off its input segment, or one
   // inside the facet, so it may differ from the input's facet by rounding (refined_check.h).
   std::vector<char> off_input;
@@ -84,9 +87,14 @@ struct RefinedPlc {
 // are. Lazy refinement (cdt.cpp) starts with none and adds those of the cavities that find no CDT.
 using RequiredSegments = std::unordered_set<uint64_t>;
 
+// What becomes of the folds that are not Delaunay once the segments are: points inside their facets
+// until they are (the theorem's premise), or nothing (a CDT may well exist all the same).
+enum class Folds { MadeDelaunay, LeftAsTheyAre };
+
 // With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar). `required`: only
 // those input segments are split (and the folds and segments that points inside facets need); null:
-// every segment, so that the refined PLC has a CDT by the theorem.
-RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr);
+// every segment, so that the refined PLC has a CDT by the theorem (with Folds::MadeDelaunay).
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr,
+                  Folds folds = Folds::MadeDelaunay);
 
 }  // namespace sweepcdt::detail
