@@ -10,7 +10,7 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more | --scad] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj, *.ply and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
@@ -18,6 +18,9 @@ Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --mo
   --rotated: instead, the clean binary-STL parts turned by 23 degrees about (0.3, 0.5, 0.8) and
            written again as float32 STL, as an exporter writes a part placed at an angle: no face is
            then exactly flat (ROTATED)
+
+  --scad: instead, the OpenSCAD parts of tests/data/scad exported by `openscad -o PART.stl` (ASCII
+           STL with 6 significant digits, as 3D-print models are shared: double coordinates)
 
 With --before, only the default command is timed, of both builds in turn (before, after, before,
 after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
@@ -177,6 +180,7 @@ def main():
     ap.add_argument("--noise", action="store_true", help="CAD parts with rounding noise (NOISY)")
     ap.add_argument("--rotated", action="store_true", help="CAD parts turned by 23 degrees (ROTATED)")
     ap.add_argument("--more", action="store_true", help="more FreeCAD parts (bench/make_more_cad_parts.py)")
+    ap.add_argument("--scad", action="store_true", help="OpenSCAD parts (tests/data/scad), exported by openscad")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -205,6 +209,12 @@ def main():
         subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "bench", "make_more_cad_parts.py"), noisy_dir.name],
                        check=True, capture_output=True)
         files = sorted(glob.glob(os.path.join(noisy_dir.name, "*.stl")))
+    if args.scad:
+        files = []
+        for source in sorted(glob.glob(os.path.join(ROOT, "tests", "data", "scad", "*.scad"))):
+            path = os.path.join(noisy_dir.name, os.path.basename(source).replace(".scad", ".stl"))
+            subprocess.run(["openscad", "-o", path, source], check=True, capture_output=True)
+            files.append(path)
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return

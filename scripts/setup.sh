@@ -11,6 +11,7 @@ packages=(
   libbenchmark-dev      # bench/
   libcgal-dev           # tests and benchmarks only (reference Delaunay/CDT, peer predicates)
   tetgen time           # bench/run_sweep.sh: the peer mesher, and /usr/bin/time for peak memory
+  openscad              # tests/data/scad: 3D-print parts exported as users export them (CliCad, bench/run_cad.py --scad)
   libdraco-dev draco    # io: Draco .drc and KHR_draco_mesh_compression; draco_encoder for round-trip tests
   libtinygltf-dev nlohmann-json3-dev   # io: glTF 2.0 (tinygltf is compiled in io/src/tinygltf_impl.cpp)
   clang-14 libclang-rt-14-dev   # tests/fuzz: libFuzzer targets (cmake -DSWEEPCDT_FUZZ=ON with clang)

@@ -1,7 +1,9 @@
 // The CAD parts of tests/data/cad (FreeCAD exports: steiner_vs_tetgen_test.cpp says what they are)
 // through the default command, as a FreeCAD user runs it, and `sweepcdt check` on every result: the
-// default meshes them all, and each mesh is exactly the CDT of its part.
+// default meshes them all, and each mesh is exactly the CDT of its part. And parts of 3D prints as
+// OpenSCAD exports them (tests/data/scad/README.md).
 #include <algorithm>
+#include <cstdlib>
 
 #include "cli_run.h"
 
@@ -27,6 +29,25 @@ TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
     ++meshed;
   }
   EXPECT_EQ(meshed, static_cast<int>(files.size()));
+}
+
+// OpenSCAD's ASCII STL (double coordinates, faces flat only up to 6 significant digits, CSG's thin
+// triangles) through the default command, exported here as a user exports it: every part meshes,
+// with Steiner points, and `check` verifies each result. OpenSCAD is installed by scripts/setup.sh.
+TEST(CliCad, OpenScadExportsMeshByDefaultAndCheckVerifiesThem) {
+  ASSERT_EQ(std::system("command -v openscad > /dev/null"), 0) << "openscad not found: run scripts/setup.sh";
+  const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "scad";
+  TempDir dir;
+  for (const char* part : {"l_bracket", "spur_gear", "knurled_knob", "twisted_vase"}) {
+    const fs::path stl = dir.path() / (std::string(part) + ".stl"), output = dir.path() / (std::string(part) + ".mesh");
+    const std::string exported = "openscad -o " + quoted(stl) + " " + quoted(folder / (std::string(part) + ".scad")) + " > /dev/null 2>&1";
+    ASSERT_EQ(std::system(exported.c_str()), 0) << exported;
+    const CliRun r = run(quoted(stl) + " -o " + quoted(output), dir);
+    ASSERT_EQ(r.exit_code, 0) << part << "\n" << r.out;
+    EXPECT_FALSE(r.says(" 0 Steiner points")) << part << ": no Steiner point needed, nothing exercised\n" << r.out;
+    const CliRun ok = run("check " + quoted(stl) + " " + quoted(output), dir);
+    EXPECT_EQ(ok.exit_code, 0) << part << "\n" << ok.out;
+  }
 }
 
 }  // namespace
