@@ -202,6 +202,7 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
     try {
+      refined = {};  // the last attempt's, freed before the next is made
       refined = detail::refine(plc, options, &required, folds);
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
@@ -249,6 +250,7 @@ std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Op
     }
   }
   ++stats.steiner_attempts;
+  refined = {};
   refined = detail::refine(plc, options);
   take_refined(refined, options, stats, clock);
   return std::nullopt;

@@ -45,9 +45,9 @@
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
 // segments, and of the segments that were Delaunay when first looked at but are not after the
 // points made for the required ones; the rest stay as they are, and the cavity sweep decides
-// exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp, the cavity sweep's first
-// tries) likewise stops once the segments are Delaunay and the facets flipped: the folds that are
-// still not Delaunay get no points, and the cavity sweep decides whether the CDT needs them.
+// exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp: the first refinements, for
+// every algorithm) likewise stops once the segments are Delaunay and the facets flipped: the folds
+// that are still not Delaunay get no points, and the algorithm decides whether the CDT needs them.
 #pragma once
 #include <array>
 #include <cstdint>
