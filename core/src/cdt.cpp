@@ -177,12 +177,11 @@ std::optional<Triangulation<3>> sweep_cavities(const detail::RefinedPlc& refined
 // are required from then on, and the refinement runs again with them (splitting, too, any segment
 // that its points make not Delaunay where it was: steiner/refine.cpp). A cavity without a CDT has a
 // segment that is not Delaunay (the theorem, applied to the cavity's PLC: every other ridge of it is
-// an edge of the Delaunay triangulation), or a fold that is not: the folds are left as they are
-// (refine_every_segment says why) until an attempt requires no new segment, then made Delaunay;
-// otherwise each attempt requires segments not required before or stops. Returns the validated CDT with its
-// refined PLC, or nullopt when the attempts run out, refinement fails (a limit, or a refined PLC
-// fails its check), or the cavities all have a CDT that the whole does not: then the caller refines
-// every segment, as before.
+// an edge of the Delaunay triangulation), or a fold that is not (folds are left as they are here:
+// refine_every_segment says why; float points rarely make any), so each attempt requires segments
+// not required before or stops. Returns the validated CDT with its refined PLC, or nullopt when the
+// attempts run out, refinement fails (a limit, or a refined PLC fails its check), or the cavities
+// all have a CDT that the whole does not: then the caller refines every segment.
 //
 // Only on surfaces with float coordinates (STL, glTF, Draco, most PLY), where a Steiner point lies
 // exactly on its segment: where points are rounded off their segments, the folds they make and the
@@ -198,12 +197,11 @@ bool all_float(const std::vector<double>& points) {
 std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
                                               detail::RefinedPlc& refined) {
   detail::RequiredSegments required;
-  detail::Folds folds = detail::Folds::LeftAsTheyAre;
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
     try {
       refined = {};  // the last attempt's, freed before the next is made
-      refined = detail::refine(plc, options, &required, folds);
+      refined = detail::refine(plc, options, &required, detail::Folds::LeftAsTheyAre);
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
       return std::nullopt;  // a limit, or rounding: refining every segment says so again, or succeeds
@@ -217,9 +215,7 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
       for (const uint32_t v : {a, b})
         if (v >= n && refined.on_segment[v - n][0] != kNone) required.insert(detail::edge_key(refined.on_segment[v - n][0], refined.on_segment[v - n][1]));
     }
-    if (required.size() > before) continue;
-    if (folds == detail::Folds::MadeDelaunay || refined.folds_left == 0) return std::nullopt;
-    folds = detail::Folds::MadeDelaunay;
+    if (required.size() == before) return std::nullopt;
   }
   return std::nullopt;
 }

@@ -63,7 +63,7 @@ struct CdtStatistics {
   uint64_t steiner_points = 0, steiner_rounds = 0;  // the points the result has; refinement rounds (each ends with the facets' flips)
   // Refinements run: lazy ones (cdt.cpp: segments required where a cavity finds no CDT) and, when
   // they do not end in a CDT, one of every segment, leaving the folds that rounding made as they are,
-  // then, when that has no CDT either, one making them Delaunay; 0 without Steiner points or
+  // then, when that has no CDT either, one making them Delaunay too; 0 without Steiner points or
   // coplanar facets.
   uint64_t steiner_attempts = 0;
   uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
