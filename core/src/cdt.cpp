@@ -225,7 +225,7 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
 // CDT theorem's premise wants those folds Delaunay too; but the CDT often does without: on an
 // OpenSCAD thread exported as ASCII STL, 20869 folds were not Delaunay after the segments' 59546
 // points, making them so took 9 more rounds and 91270 points (the deletion pass then removed 126813
-// of the 150816, in 21 s), and the cavity sweep found the CDT of the PLC without them (7 s, 21903
+// of the 150816, in 21 s), and the cavity sweep found the CDT of the PLC without them (8 s, 21903
 // points kept). The algorithm decides exactly — the cavity sweep by its cavities alone (one without
 // a CDT means the whole has none), the others by sweeping — and when it finds no CDT the folds are
 // made Delaunay after all: nullopt, with `refined` refined again, which the caller triangulates (as
