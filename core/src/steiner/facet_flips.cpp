@@ -148,8 +148,10 @@ class Flipper {
     f_.triangles[t1] = {c, a, d};
     f_.triangles[t2] = {d, b, c};
     last_flip_ = {a, b, c, d};
-    sides_.erase(key);
-    sides_[edge_key(c, d)] = {t1, t2};
+    auto node = sides_.extract(key);  // the flipped edge's entry becomes the new diagonal's: no allocation
+    node.key() = edge_key(c, d);
+    node.mapped() = {t1, t2};
+    sides_.insert(std::move(node));
     moved(edge_key(a, d), t2, t1);
     moved(edge_key(b, c), t1, t2);
     for (uint64_t k : {edge_key(c, a), edge_key(a, d), edge_key(d, b), edge_key(b, c)})

@@ -28,6 +28,7 @@ using EdgeSides = std::unordered_map<uint64_t, std::array<uint32_t, 2>>;
 inline EdgeSides interior_edge_sides(const std::vector<std::array<uint32_t, 3>>& triangles, const std::unordered_set<uint64_t>& segments,
                                      std::vector<uint64_t>* first_seen = nullptr) {
   EdgeSides sides;
+  sides.reserve(triangles.size() * 3 / 2);  // about as many edges: no rehashing as it fills
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       const uint64_t key = edge_key(triangles[t][i], triangles[t][(i + 1) % 3]);
