@@ -21,6 +21,7 @@
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/steiner_point.h"
 #include "sweepcdt/validate.h"
+#include "sweepcdt/verify_cdt.h"
 #include "test_shapes.h"
 
 using namespace sweepcdt;
@@ -445,23 +446,29 @@ TEST(Steiner, LazyRefinementOnFloatSurfaces) {
 }
 
 // A split point rounded off its segment bends the facets at the edges from it (folds). The CDT
-// theorem's premise wants those folds Delaunay too, but the CDT often does without: the cavity sweep
-// first tries the refined PLC with its folds left as they are (cdt.cpp: refine_every_segment) and
-// decides exactly; when a cavity finds no CDT, refinement runs again and makes them Delaunay. Thin
-// fins with CAD noise (double coordinates, so every segment is refined) leave folds that are not
-// Delaunay. With one noise (seed 7) the CDT does without them: one refinement, far fewer points.
-// With another (seed 2) it does not: a second refinement, the points of the theorem's premise. Both
-// results are validated CDTs of their refined PLCs, and each refined PLC is refine()'s own.
+// theorem's premise wants those folds Delaunay too, but the CDT often does without: the refined PLC
+// is first tried with its folds left as they are (cdt.cpp: refine_every_segment), the algorithm
+// decides exactly (the cavity sweep by its cavities, the sweep sphere by sweeping), and when it finds
+// no CDT refinement runs again and makes them Delaunay. Thin fins with CAD noise (double
+// coordinates, so every segment is refined) leave folds that are not Delaunay. With one noise
+// (seed 7) the CDT does without them: one refinement, far fewer points. With another (seed 2) it
+// does not: a second refinement, the points of the theorem's premise. Every result is a validated
+// CDT of its refined PLC, which is refine()'s own, and passes verify_cdt against the input.
 TEST(Steiner, FoldsLeftAsTheyAreUnlessTheCdtNeedsThem) {
   Options options = mesh_defaults();
   options.remove_steiner_points = false;  // compare what refinement added
-  const auto mesh = [&](const Plc<3>& plc, const detail::RefinedPlc& expected, uint64_t attempts) {
+  const auto mesh = [&](const Plc<3>& plc, const detail::RefinedPlc& expected, uint64_t attempts, Algorithm algorithm) {
     CdtStatistics stats;
     Options counted = options;
     counted.statistics = &stats;
+    counted.algorithm = algorithm;
     Plc<3> triangulated;
     const Triangulation<3> tri = cdt(plc, counted, &triangulated);
     EXPECT_TRUE(validate_triangulated(tri, triangulated).ok());
+    // Independently of the refined PLC: the mesh is the CDT of the input surface (`sweepcdt check`).
+    const MeshVerification verified = verify_cdt(plc, TetMeshView{tri.points, tri.simplices, {}, {}, {}}, FacetMode::Coplanar);
+    EXPECT_EQ(verified.total_problems, 0u) << (verified.problems.empty() ? "" : verified.problems.front());
+    EXPECT_TRUE(verified.validated);
     EXPECT_EQ(stats.steiner_attempts, attempts);
     EXPECT_EQ(triangulated.points, expected.plc.points);
     EXPECT_EQ(triangulated.simplices, expected.plc.simplices);
@@ -472,12 +479,12 @@ TEST(Steiner, FoldsLeftAsTheyAreUnlessTheCdtNeedsThem) {
   ASSERT_GT(left.folds_left, 0u) << "no fold is left not Delaunay: nothing exercised";
   EXPECT_EQ(made.folds_left, 0u);
   EXPECT_LT(left.steiner_on.size(), made.steiner_on.size());
-  mesh(without, left, 1);
+  for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere}) mesh(without, left, 1, algorithm);
 
   const Plc<3> with = sweepcdt::testing::noisy_fins(2);
   const detail::RefinedPlc needed = detail::refine(with, options);
   ASSERT_GT(detail::refine(with, options, nullptr, detail::Folds::LeftAsTheyAre).folds_left, 0u);
-  mesh(with, needed, 2);
+  for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere}) mesh(with, needed, 2, algorithm);
   std::printf("[ folds ] fins, seed 7: %llu folds not Delaunay left, %zu Steiner points (folds made Delaunay: %zu); seed 2: %zu\n",
               static_cast<unsigned long long>(left.folds_left), left.steiner_on.size(), made.steiner_on.size(), needed.steiner_on.size());
 }
