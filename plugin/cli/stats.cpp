@@ -49,6 +49,8 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
     j["algorithm"] = to_string(r.cdt.algorithm);  // the one that ran (sweep-plane falls back to the sphere on hulls)
     j["steiner_points"] = r.cdt.steiner_points;
     j["steiner_points_removed"] = r.cdt.steiner_points_removed;
+    j["steiner_deletions_tried"] = r.cdt.steiner_deletions_tried;
+    j["steiner_retries_skipped"] = r.cdt.steiner_retries_skipped;
     j["steiner_rounds"] = r.cdt.steiner_rounds;
     j["steiner_attempts"] = r.cdt.steiner_attempts;
     j["facets"] = r.cdt.facets;

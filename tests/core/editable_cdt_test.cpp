@@ -230,9 +230,31 @@ TEST(EditableCdt, DeletionsThatLeaveNoCdt) {
       const auto now = mesh.snapshot();
       EXPECT_EQ(now.plc.simplices, left.simplices) << v;
       EXPECT_EQ(fixtures::simplex_set(now.triangulation), fixtures::simplex_set(cdt(left))) << v;
-    } catch (const NoCdtError&) {
+    } catch (const NoCdtError& e) {
       ++failed;
       EXPECT_FALSE(has_cdt) << v;
+      // Refused without throwing, the deletion hands out the witness the exception carried: a
+      // simplex of v's neighbours (the deletion pass tries v again only when one of them, or of
+      // its constraint neighbours, goes).
+      std::vector<uint32_t> neighbours, witness;
+      EXPECT_FALSE(mesh.try_commit_removal(mesh.plan_removal(v), neighbours, &witness)) << v;
+      EXPECT_EQ(witness, e.witness()) << v;
+      EXPECT_EQ(witness.size(), 4u) << v;
+      const std::vector<uint32_t> link = mesh.neighbours(v);
+      for (uint32_t w : witness) EXPECT_TRUE(std::binary_search(link.begin(), link.end(), w)) << v << ": witness vertex " << w;
+      // Its constraint neighbours: the other vertices of the PLC's facets through v, as the
+      // snapshot's PLC has them (renumbered: old_ids).
+      std::vector<uint32_t> on_facets;
+      for (std::size_t j = 0; j < before.plc.num_simplices(); ++j) {
+        const uint32_t* f = before.plc.simplex(j);
+        if (std::none_of(f, f + 3, [&](uint32_t x) { return before.old_ids[x] == v; })) continue;
+        for (int k = 0; k < 3; ++k)
+          if (before.old_ids[f[k]] != v) on_facets.push_back(before.old_ids[f[k]]);
+      }
+      std::sort(on_facets.begin(), on_facets.end());
+      on_facets.erase(std::unique(on_facets.begin(), on_facets.end()), on_facets.end());
+      EXPECT_FALSE(on_facets.empty()) << v;
+      EXPECT_EQ(mesh.constraint_neighbours(v), on_facets) << v;
       const auto after = mesh.snapshot();
       EXPECT_EQ(fixtures::simplex_set(after.triangulation), fixtures::simplex_set(before.triangulation));
       EXPECT_EQ(after.plc.simplices, before.plc.simplices);

@@ -89,7 +89,9 @@ class EditableCdt {
   // The same without throwing what a refused deletion met: false for NoCdtError and
   // VertexRemovalError (other errors are thrown), else true with the neighbours in `neighbours`. For
   // a caller that expects most deletions to be refused (unwinding costs as much as a small star).
-  bool try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours);
+  // Given `witness`, a refusal leaves there the NoCdtError's witness (its vertex ids: mostly the
+  // simplex the star sweep found in front of a face built after it), empty for VertexRemovalError.
+  bool try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours, std::vector<uint32_t>* witness = nullptr);
   // Whether commit_removal() would use `removal` as it is (false for an empty one): no commit since
   // it was made changed what it read.
   bool plan_is_current(const Removal& removal) const;
@@ -111,6 +113,7 @@ class EditableCdt {
 
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)
+  std::vector<uint32_t> constraint_neighbours(uint32_t v) const;  // those sharing a constraint with it, ascending
   std::size_t num_vertices() const;   // vertices left
   std::size_t num_simplices() const;
 

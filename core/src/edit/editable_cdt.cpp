@@ -54,7 +54,7 @@ struct EditableCdt<D>::Impl {
   bool unbend = false;                 // unbend_facets_at_steiner_points()
   std::size_t unbend_largest_star = 0;
   std::vector<char> constraint_alive;
-  std::vector<std::vector<uint32_t>> constraints_at;  // per vertex (dead ones dropped lazily)
+  std::vector<std::vector<uint32_t>> constraints_at;  // per vertex, the live ones
   std::unordered_map<Key, uint32_t, TupleHash> constraint_of;
   std::vector<RegionSeed<D>> region_seeds;
 
@@ -123,12 +123,7 @@ struct EditableCdt<D>::Impl {
     has_tags = !plc.tags.empty();
   }
 
-  std::vector<uint32_t> live_constraints_at(uint32_t v) const {
-    std::vector<uint32_t> list;
-    for (uint32_t c : constraints_at[v])
-      if (constraint_alive[c]) list.push_back(c);
-    return list;
-  }
+  const std::vector<uint32_t>& live_constraints_at(uint32_t v) const { return constraints_at[v]; }
 
   // The facets through v, each without v (the paper's recursion): indices into `through`.
   // Throws VertexRemovalError when v cannot go, or, given `refusal`, says why there.
@@ -141,7 +136,7 @@ struct EditableCdt<D>::Impl {
       unbending = detail::Unbend{num_input_points, [&](uint32_t a, uint32_t b) {
                                    uint32_t tag = kNone;
                                    for (uint32_t c : constraints_at[a])
-                                     if (constraint_alive[c] && std::count(constraints[c].begin(), constraints[c].end(), b)) {
+                                     if (std::count(constraints[c].begin(), constraints[c].end(), b)) {
                                        if (tag != kNone && tags[c] != tag) return true;
                                        tag = tags[c];
                                      }
@@ -215,6 +210,7 @@ struct EditableCdt<D>::Impl {
     bool read_beyond = false;       // v on the hull: its checks walked further
     std::exception_ptr error;
     bool refused = false;  // the error is NoCdtError or VertexRemovalError
+    std::vector<uint32_t> witness;  // a NoCdtError's (global ids)
     std::vector<uint32_t> star, through, ids;
     Triangulation<D> fill;
     std::vector<LinkFace> link;
@@ -228,9 +224,10 @@ struct EditableCdt<D>::Impl {
     p.epoch = commits;
     try {
       work_out(p);
-    } catch (const NoCdtError&) {
+    } catch (const NoCdtError& e) {
       p.error = std::current_exception();
       p.refused = true;
+      p.witness = e.witness();
     } catch (const VertexRemovalError&) {
       p.error = std::current_exception();
       p.refused = true;
@@ -249,13 +246,17 @@ struct EditableCdt<D>::Impl {
   }
 
   // Applies p, worked out again first if stale: false when the deletion is refused (NoCdtError,
-  // VertexRemovalError) and `throw_refusal` is off, else v's former neighbours in `neighbours`.
-  bool apply(Plan p, std::vector<uint32_t>& neighbours, bool throw_refusal) {
+  // VertexRemovalError) and `throw_refusal` is off (the NoCdtError's witness then in `witness`, if
+  // given), else v's former neighbours in `neighbours`.
+  bool apply(Plan p, std::vector<uint32_t>& neighbours, bool throw_refusal, std::vector<uint32_t>* witness = nullptr) {
     if (stale(p)) {
       ++redone;
       p = plan(p.v);
     }
-    if (p.refused && !throw_refusal) return false;
+    if (p.refused && !throw_refusal) {
+      if (witness) *witness = std::move(p.witness);
+      return false;
+    }
     if (p.error) std::rethrow_exception(p.error);
     commit(p.v, p.star, p.through, p.fill, p.link, p.added);
     std::sort(p.ids.begin(), p.ids.end());  // ascending, as neighbours() lists them
@@ -367,7 +368,9 @@ struct EditableCdt<D>::Impl {
       throw cavity_error(e);
     }
     if (failed) {
-      p.error = std::make_exception_ptr(cavity_error(*failed));
+      NoCdtError error = cavity_error(*failed);
+      p.witness = error.witness();
+      p.error = std::make_exception_ptr(std::move(error));
       p.refused = true;
       return;
     }
@@ -665,6 +668,7 @@ struct EditableCdt<D>::Impl {
     for (uint32_t c : through) {
       constraint_alive[c] = 0;
       constraint_of.erase(sorted(constraints[c]));
+      for (uint32_t x : constraints[c]) std::erase(constraints_at[x], c);  // scanned by every plan near x
     }
     for (const NewConstraint& c : added) add_constraint(c.key, c.plc_side, c.tag);
 
@@ -854,8 +858,8 @@ std::vector<uint32_t> EditableCdt<D>::commit_removal(Removal&& removal) {
   return neighbours;
 }
 template <int D>
-bool EditableCdt<D>::try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours) {
-  return impl_->apply(std::move(*take(removal)), neighbours, false);
+bool EditableCdt<D>::try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours, std::vector<uint32_t>* witness) {
+  return impl_->apply(std::move(*take(removal)), neighbours, false, witness);
 }
 template <int D>
 bool EditableCdt<D>::plan_is_current(const Removal& removal) const {
@@ -885,6 +889,17 @@ std::vector<uint32_t> EditableCdt<D>::neighbours(uint32_t v) const {
   std::sort(link.begin(), link.end());
   link.erase(std::unique(link.begin(), link.end()), link.end());
   return link;
+}
+template <int D>
+std::vector<uint32_t> EditableCdt<D>::constraint_neighbours(uint32_t v) const {
+  impl_->require_vertex(v);
+  std::vector<uint32_t> around;
+  for (uint32_t c : impl_->live_constraints_at(v))
+    for (uint32_t w : impl_->constraints[c])
+      if (w != v) around.push_back(w);
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  return around;
 }
 template <int D>
 std::size_t EditableCdt<D>::num_vertices() const {

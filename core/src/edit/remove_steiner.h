@@ -2,7 +2,8 @@
 // every segment that is not Delaunay, but a CDT often exists without many of those points. Each is
 // deleted again (paper §5, EditableCdt) when the PLC left still has a CDT — the deletion checks
 // that exactly and is undone otherwise — from a work list that holds every point first, spread
-// out in bit-reversed order of creation (a point that stays is tried again when a neighbour goes). The next deletions of the list are worked out on
+// out in bit-reversed order of creation (a point that stays is tried again when a neighbour that
+// bears on its refusal goes). The next deletions of the list are worked out on
 // `options.threads` threads and applied in list order: the result is one thread's.
 #pragma once
 #include <array>
@@ -26,14 +27,17 @@ inline constexpr uint32_t kPointsForThreads = 1024;
 // kept in 118 s unbounded, before the double-word predicate stage; 7189 in 7.3 s at 32, after it).
 inline constexpr std::size_t kLargestBentStar = 32;
 
+struct SteinerDeletions {
+  uint64_t removed = 0, tried = 0, skipped = 0;  // points deleted, deletions tried, retries skipped
+};
+
 // `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner
 // points); both are replaced by the result. `made_from`: per Steiner point, the two points it was
 // made from (refine.h); `sweepcdt check` recognises a Steiner point as a rounded split of those
 // two, so a point stays while a point made from it stays. (A point on a segment is made from the
 // segment's input ends when their difference is exact; only points on other segments and fold
-// points are made from Steiner points.) Returns the number of points deleted.
-// Throws CancelledError when `options.progress` says so.
-uint64_t remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
+// points are made from Steiner points.) Throws CancelledError when `options.progress` says so.
+SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
                                const Options& options);
 
 }  // namespace sweepcdt::detail
