@@ -31,17 +31,18 @@ inline unsigned thread_count(unsigned requested) {
 // Work below this many items a part is not worth a thread.
 inline constexpr std::size_t kItemsPerThread = 4096;
 
-// The number of parts for_each_part() cuts n items into.
-inline std::size_t parts_for(std::size_t n, unsigned threads) {
-  if (n < 2 * kItemsPerThread) return 1;
-  return std::max<std::size_t>(1, std::min<std::size_t>(thread_count(threads), n / kItemsPerThread));
+// The number of parts for_each_part() cuts n items into (`per_thread`: fewer for costlier items).
+inline std::size_t parts_for(std::size_t n, unsigned threads, std::size_t per_thread = kItemsPerThread) {
+  if (n < 2 * per_thread) return 1;
+  return std::max<std::size_t>(1, std::min<std::size_t>(thread_count(threads), n / per_thread));
 }
 
-// body(part, begin, end) for each of parts_for(n, threads) contiguous parts of [0, n); the calling
-// thread runs part 0. The first exception of a part (in part order) is rethrown once all are done.
+// body(part, begin, end) for each of parts_for(n, threads, per_thread) contiguous parts of [0, n);
+// the calling thread runs part 0. The first exception of a part (in part order) is rethrown once
+// all are done.
 template <class Body>
-void for_each_part(std::size_t n, unsigned threads, Body&& body) {
-  const std::size_t parts = parts_for(n, threads);
+void for_each_part(std::size_t n, unsigned threads, Body&& body, std::size_t per_thread = kItemsPerThread) {
+  const std::size_t parts = parts_for(n, threads, per_thread);
   const auto range = [&](std::size_t part) { return std::pair{n * part / parts, n * (part + 1) / parts}; };
   if (parts == 1) {
     body(std::size_t{0}, std::size_t{0}, n);

@@ -186,7 +186,7 @@ TEST(CavitySweep, ConstraintsOverlappingDelaunayFacesInTheirPlaneDisturbThem) {
       EXPECT_FALSE((detail::interior_meets<3>({plc.point(dt.tets[4 * t]), plc.point(dt.tets[4 * t + 1]), plc.point(dt.tets[4 * t + 2]),
                                                plc.point(dt.tets[4 * t + 3])},
                                               {plc.point(plc.simplex(c)[0]), plc.point(plc.simplex(c)[1]), plc.point(plc.simplex(c)[2])})));
-  EXPECT_EQ(detail::disturbed_simplices<3>(plc, dt, faces.missing).tets, (std::vector<uint8_t>{1, 1, 1, 1}));
+  EXPECT_EQ(detail::disturbed_simplices<3>(plc, dt, faces.missing, 1).tets, (std::vector<uint8_t>{1, 1, 1, 1}));
   EXPECT_THROW(run(plc, Algorithm::SweepSphere), NoCdtError);
   EXPECT_THROW(run(plc, Algorithm::CavitySweep), NoCdtError);
 }

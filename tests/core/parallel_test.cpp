@@ -35,6 +35,19 @@ Plc<3> comb(int teeth) {
   return fixtures::extruded_columns(xs, tops, 3);
 }
 
+// Thin fins whose faces are a few ulps off flat (CAD rounding noise): many Steiner points, and a
+// refined PLC whose bent facets miss many Delaunay faces (the cavity sweep's cavities).
+Plc<3> noisy_fins(int fins) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < fins; ++fin) {
+    xs.push_back(xs.back() + 0.02);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.2);
+    tops.push_back(0.2 + 0.01 * fin);
+  }
+  return sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+}
+
 // `copies` copies of `plc`, each shifted by `step` along x: overlapping bodies when step is small.
 Plc<3> copies_of(const Plc<3>& plc, int copies, double step) {
   Plc<3> all;
@@ -93,27 +106,35 @@ TEST(Parallel, ValidateReportsTheSameFailuresAndTies) {
 }
 
 // cdt() with one thread and with several: the same simplices, for the cavity sweep (whose Delaunay
-// tetrahedralization runs beside the check when there is a second thread) and the sweep; the comb
-// with the converter's options (it needs Steiner points), the deletion pass off to keep it short.
+// tetrahedralization runs beside the check when there is a second thread, and whose cavities are
+// swept on the threads: cavity_cdt.cpp) and the sweep; the comb and the noisy fins (whose refined PLC
+// has cavities) with the converter's options, the deletion pass off to keep it short.
 TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(0, 1);
   Plc<3> points;
   for (int i = 0; i < 3 * 6000; ++i) points.points.push_back(u(rng));
-  for (const auto& [what, plc] : {std::pair{"random points", points}, std::pair{"comb", comb(600)}}) {
+  for (const auto& [what, plc] : {std::pair{"random points", points}, std::pair{"comb", comb(600)}, std::pair{"noisy fins", noisy_fins(12)}}) {
     for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere}) {
-      Options one = std::string(what) == "comb" ? mesh_defaults() : Options{};
+      Options one = std::string(what) != "random points" ? mesh_defaults() : Options{};
       one.remove_steiner_points = false;
       Options many = one;
       one.algorithm = many.algorithm = algorithm;
       one.threads = 1;
       many.threads = kMany;
-      CdtStatistics stats;
+      CdtStatistics stats, stats_one;
       many.statistics = &stats;
+      one.statistics = &stats_one;
       const Triangulation<3> a = cdt(plc, one), b = cdt(plc, many);
       EXPECT_EQ(fixtures::simplex_set(b), fixtures::simplex_set(a)) << what << " " << to_string(algorithm);
       EXPECT_EQ(b.regions.size(), a.regions.size());
       EXPECT_EQ(stats.algorithm, algorithm) << what;
+      if (algorithm == Algorithm::CavitySweep && std::string(what) == "noisy fins") {
+        EXPECT_GT(stats_one.cavity_tetrahedra, 100u) << "no cavities: their sweeps on threads are not exercised";
+        EXPECT_EQ(b.simplices, a.simplices) << "cavities assembled in another order";
+        EXPECT_EQ(stats.queue_pops, stats_one.queue_pops);
+        EXPECT_EQ(stats.drop_moves, stats_one.drop_moves);
+      }
     }
   }
 }
@@ -153,17 +174,32 @@ TEST(Parallel, ConstraintFacesAsABruteForceLookupFindsThem) {
   }
 }
 
+// The cavity sweep's disturbed simplices (cavity/disturbed.h), searched from the missing constraints
+// in parts: the same simplices, and the same first one per constraint, as on one thread. The PLC is
+// what the converter sweeps on CAD parts: noisy fins refined with Steiner points, whose bent facets
+// miss many Delaunay faces.
+TEST(Parallel, DisturbedSimplicesAsOneThreadFindsThem) {
+  const Plc<3> fins = noisy_fins(30);
+  Options options = mesh_defaults();
+  options.remove_steiner_points = false;
+  Plc<3> refined;
+  cdt(fins, options, &refined);
+  const detail::DelaunayMesh dt = detail::delaunay_mesh<3>(refined.points);
+  const detail::ConstraintFaces faces = detail::constraint_faces<3>(refined, dt, 1);
+  std::cout << "[ fins ] " << faces.missing.size() << " of " << refined.num_simplices() << " constraints missing\n";
+  const detail::Disturbed one = detail::disturbed_simplices<3>(refined, dt, faces.missing, 1);
+  const detail::Disturbed many = detail::disturbed_simplices<3>(refined, dt, faces.missing, kMany);
+  ASSERT_GT(detail::parts_for(faces.missing.size(), kMany, detail::kConstraintsPerThread), 1u) << "too few to search in parts";
+  ASSERT_EQ(one.first.size(), faces.missing.size());
+  EXPECT_GT(std::count(one.tets.begin(), one.tets.end(), 1), 100);
+  EXPECT_EQ(many.tets, one.tets);
+  EXPECT_EQ(many.first, one.first);
+}
+
 // The deletion pass (remove_steiner.h) works deletions out on several threads and applies them in
 // the order of one: the same points deleted, the same tetrahedra in the same order.
 TEST(Parallel, SteinerPointsDeletedAsOneThreadDeletesThem) {
-  std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < 12; ++fin) {
-    xs.push_back(xs.back() + 0.02);  // thin fins, their faces a few ulps off flat: many Steiner points
-    tops.push_back(1.0);
-    xs.push_back(xs.back() + 0.2);
-    tops.push_back(0.2 + 0.01 * fin);
-  }
-  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  const Plc<3> fins = noisy_fins(12);
   Options one = mesh_defaults(), many = mesh_defaults();
   one.threads = 1;
   many.threads = kMany;

@@ -1,10 +1,17 @@
 #include "cavity_cdt.h"
 
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <thread>
+
 #include "sweepcdt/predicates/perturbation.h"
 #include "sweepcdt/validate.h"
 
 #include "../facets.h"
 #include "../gift_wrap.h"
+#include "../parallel.h"
 #include "../sweep/sweep_cdt.h"
 #include "../tuple_map.h"
 #include "cavity_plc.h"
@@ -67,6 +74,74 @@ Triangulation<D> assemble(const Plc<D>& plc, const DelaunayMesh& dt, const std::
   return tri;
 }
 
+// One cavity swept (cavity_cdt.cpp's step 4): its CDT, or failed.
+template <int D>
+struct Swept {
+  Triangulation<D> tri;
+  bool failed = false;
+  CdtStatistics stats;  // the sweep's counters
+};
+
+// Every cavity swept, on options.threads threads: the cavities are independent (the domain split by
+// the kept Delaunay simplices), so each is one job, the largest first; the results do not depend on
+// the threads. Without `validate_each` the sweeps stop at the first failure (the caller gives up
+// then). Progress is reported from the calling thread's sweeps only (a callback need not be
+// thread-safe); when it cancels, every sweep stops and CancelledError is thrown.
+template <int D>
+std::vector<Swept<D>> sweep_each(const Cavities<D>& cavities, const Options& options, bool validate_each) {
+  const std::size_t n = cavities.parts.size();
+  std::vector<Swept<D>> swept(n);
+  std::vector<std::size_t> order(n);
+  for (std::size_t c = 0; c < n; ++c) order[c] = c;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cavities.parts[a].plc.num_points() > cavities.parts[b].plc.num_points(); });
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> stop{false}, cancelled{false};
+  Options each = options;
+  each.threads = 1;
+  if (options.progress)
+    each.progress = [&](const Progress& p) {
+      if (cancelled.load(std::memory_order_relaxed)) return false;
+      if (std::this_thread::get_id() != caller || options.progress(p)) return true;
+      cancelled = true;
+      return false;
+    };
+  std::vector<std::exception_ptr> errors(n);
+  const std::function<void(std::size_t)> sweep = [&](std::size_t k) {
+    const std::size_t c = order[k];
+    if (stop.load(std::memory_order_relaxed)) return;
+    const Plc<D>& plc = cavities.parts[c].plc;
+    Swept<D>& part = swept[c];
+    try {
+      part.tri = sweep_cdt<D>(plc, seed_simplex(plc), each, part.stats);
+      // Without a CDT the sweep can also end with a triangulation that is none (a triangular
+      // bipyramid whose two constraints meet at an edge that is not Delaunay: two tetrahedra, not
+      // locally Delaunay between them); validate() finds that later, for the whole. Lazy refinement
+      // needs the cavity, so it validates each.
+      if (validate_each) {
+        compute_neighbors(part.tri);
+        part.failed = !validate<D>(part.tri, plc, ValidationLevel::Full, 1).ok();
+      }
+    } catch (const NoCdtError&) {
+      part.failed = true;
+      if (!validate_each) stop = true;
+    } catch (...) {
+      errors[c] = std::current_exception();
+      stop = true;
+    }
+  };
+  const unsigned threads = n > 1 ? std::min<unsigned>(thread_count(options.threads), static_cast<unsigned>(n)) : 1;
+  if (threads > 1) {
+    WorkerPool(threads - 1).run(n, sweep);
+  } else {
+    for (std::size_t k = 0; k < n; ++k) sweep(k);
+  }
+  if (cancelled) throw CancelledError();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return swept;
+}
+
 }  // namespace
 
 template <int D>
@@ -89,7 +164,7 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
   const DelaunayMesh& dt = *delaunay;
   const ConstraintFaces constraints = constraint_faces<D>(plc, dt, options.threads);
   stats.missing_constraints = constraints.missing.size();
-  const Disturbed disturbed = disturbed_simplices<D>(plc, dt, constraints.missing);
+  const Disturbed disturbed = disturbed_simplices<D>(plc, dt, constraints.missing, options.threads);
   if (disturbed.tets.size() != dt.tets.size() / (D + 1)) return std::nullopt;
   const std::vector<Place> place = domain_sides<D>(plc, dt, constraints.of_facet, disturbed.tets, options.threads);
   if (place.empty()) return std::nullopt;
@@ -105,35 +180,23 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
       for (int i = 0; i < D; ++i)
         for (int j = i + 1; j < D; ++j) failed_edges->push_back({cavity.global[s[f + i]], cavity.global[s[f + j]]});
   };
+  const std::vector<Swept<D>> swept = sweep_each(cavities, options, failed_edges != nullptr);
   std::vector<uint32_t> cavity_simplices;
   std::vector<uint32_t> cavity_of;  // per cavity simplex, with failed_edges: its cavity
   bool failed = false;
   for (std::size_t c = 0; c < cavities.parts.size(); ++c) {
-    const CavityPlc<D>& cavity = cavities.parts[c];
-    Triangulation<D> part;
-    try {
-      part = sweep_cdt<D>(cavity.plc, seed_simplex(cavity.plc), options, stats);
-    } catch (const NoCdtError&) {
+    const Swept<D>& part = swept[c];
+    stats.queue_pushes += part.stats.queue_pushes, stats.queue_pops += part.stats.queue_pops;
+    stats.stale_pops += part.stats.stale_pops, stats.drop_moves += part.stats.drop_moves;
+    if (part.failed) {
       // The PLC has no CDT: the whole sweep finds out again and names a witness.
       if (!failed_edges) return std::nullopt;
       failed = true;
-      report(cavity);
+      report(cavities.parts[c]);
       continue;
     }
-    // Without a CDT the sweep can also end with a triangulation that is none (a triangular
-    // bipyramid whose two constraints meet at an edge that is not Delaunay: two tetrahedra, not
-    // locally Delaunay between them); validate() finds that later, for the whole. Lazy refinement
-    // needs the cavity, so it validates each.
-    if (failed_edges) {
-      compute_neighbors(part);
-      if (!validate<D>(part, cavity.plc, ValidationLevel::Full, 1).ok()) {
-        failed = true;
-        report(cavity);
-        continue;
-      }
-    }
-    for (const uint32_t v : part.simplices) cavity_simplices.push_back(cavity.global[v]);
-    if (failed_edges) cavity_of.insert(cavity_of.end(), part.num_simplices(), static_cast<uint32_t>(c));
+    for (const uint32_t v : part.tri.simplices) cavity_simplices.push_back(cavities.parts[c].global[v]);
+    if (failed_edges) cavity_of.insert(cavity_of.end(), part.tri.num_simplices(), static_cast<uint32_t>(c));
   }
   if (failed) return std::nullopt;
   if (!failed_edges) return assemble<D>(plc, dt, place, cavity_simplices);

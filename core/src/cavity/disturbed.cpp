@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 
 #include "../facets.h"
 #include "../parallel.h"
@@ -72,7 +73,7 @@ ConstraintFaces constraint_faces(const Plc<D>& plc, const DelaunayMesh& dt, unsi
 }
 
 template <int D>
-Disturbed disturbed_simplices(const Plc<D>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing) {
+Disturbed disturbed_simplices(const Plc<D>& plc, const DelaunayMesh& dt, const std::vector<uint32_t>& missing, unsigned threads) {
   constexpr int kVertices = D + 1;
   const std::size_t simplices = dt.tets.size() / kVertices;
   Disturbed result;
@@ -82,51 +83,61 @@ Disturbed disturbed_simplices(const Plc<D>& plc, const DelaunayMesh& dt, const s
   std::vector<uint32_t> simplex_at(plc.num_points(), kNone), degree(plc.num_points(), 0);
   for (uint32_t t = 0; t < simplices; ++t)
     for (int i = 0; i < kVertices; ++i) simplex_at[dt.tets[kVertices * t + i]] = t, ++degree[dt.tets[kVertices * t + i]];
-  std::vector<uint32_t> visited(simplices, 0), star, queue;
-  uint32_t stamp = 0;
-  const auto visit = [&](uint32_t t) {
-    if (visited[t] == stamp) return false;
-    visited[t] = stamp;
-    return true;
-  };
-  for (const uint32_t c : missing) {
-    ++stamp;
-    const uint32_t* constraint = plc.simplex(c);
-    // The simplices around the constraint's vertex a with the fewest: a walk across the facets
-    // through a. (Each is tested; an input vertex at the apex of a fan across a flat face can have
-    // hundreds, and a Steiner point on its edge a few dozen.)
-    const uint32_t a =
-        *std::min_element(constraint, constraint + D, [&](uint32_t x, uint32_t y) { return degree[x] < degree[y]; });
-    queue.clear();
-    star.assign(1, simplex_at[a]);
-    visit(star[0]);
-    for (std::size_t head = 0; head < star.size(); ++head) {
-      const uint32_t t = star[head];
-      for (int i = 0; i < kVertices; ++i) {
-        const uint32_t nb = dt.neighbors[kVertices * t + i];
-        if (dt.tets[kVertices * t + i] != a && nb != kNone && visit(nb / kVertices)) star.push_back(nb / kVertices);
+  result.first.assign(missing.size(), kNone);
+  std::atomic<bool> none_found{false};
+  // Each part writes its constraints' `first` entries and sets flags (a union: the order of the
+  // writes does not matter; atomic, as two parts may set one flag).
+  for_each_part(missing.size(), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::vector<uint32_t> visited(simplices, 0), star, queue;
+    uint32_t stamp = 0;
+    const auto visit = [&](uint32_t t) {
+      if (visited[t] == stamp) return false;
+      visited[t] = stamp;
+      return true;
+    };
+    for (std::size_t k = begin; k < end; ++k) {
+      ++stamp;
+      const uint32_t* constraint = plc.simplex(missing[k]);
+      // The simplices around the constraint's vertex a with the fewest: a walk across the facets
+      // through a. (Each is tested; an input vertex at the apex of a fan across a flat face can have
+      // hundreds, and a Steiner point on its edge a few dozen.)
+      const uint32_t a =
+          *std::min_element(constraint, constraint + D, [&](uint32_t x, uint32_t y) { return degree[x] < degree[y]; });
+      queue.clear();
+      star.assign(1, simplex_at[a]);
+      visit(star[0]);
+      for (std::size_t head = 0; head < star.size(); ++head) {
+        const uint32_t t = star[head];
+        for (int i = 0; i < kVertices; ++i) {
+          const uint32_t nb = dt.neighbors[kVertices * t + i];
+          if (dt.tets[kVertices * t + i] != a && nb != kNone && visit(nb / kVertices)) star.push_back(nb / kVertices);
+        }
+        if (disturbs<D>(plc, &dt.tets[kVertices * t], constraint)) queue.push_back(t);
       }
-      if (disturbs<D>(plc, &dt.tets[kVertices * t], constraint)) queue.push_back(t);
-    }
-    if (queue.empty()) return {};  // impossible for a missing constraint: fall back
-    result.first.push_back(queue.front());
-    // Then outward through neighbours from every disturbed simplex.
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const uint32_t t = queue[head];
-      disturbed[t] = 1;
-      for (int i = 0; i < kVertices; ++i) {
-        const uint32_t nb = dt.neighbors[kVertices * t + i];
-        if (nb != kNone && visit(nb / kVertices) && disturbs<D>(plc, &dt.tets[nb / kVertices * kVertices], constraint))
-          queue.push_back(nb / kVertices);
+      if (queue.empty()) {  // impossible for a missing constraint: fall back
+        none_found = true;
+        return;
+      }
+      result.first[k] = queue.front();
+      // Then outward through neighbours from every disturbed simplex.
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const uint32_t t = queue[head];
+        std::atomic_ref<uint8_t>(disturbed[t]).store(1, std::memory_order_relaxed);
+        for (int i = 0; i < kVertices; ++i) {
+          const uint32_t nb = dt.neighbors[kVertices * t + i];
+          if (nb != kNone && visit(nb / kVertices) && disturbs<D>(plc, &dt.tets[nb / kVertices * kVertices], constraint))
+            queue.push_back(nb / kVertices);
+        }
       }
     }
-  }
+  }, kConstraintsPerThread);
+  if (none_found) return {};
   return result;
 }
 
 #define SWEEPCDT_DISTURBED(D)                                                                                  \
   template ConstraintFaces constraint_faces<D>(const Plc<D>&, const DelaunayMesh&, unsigned);                   \
-  template Disturbed disturbed_simplices<D>(const Plc<D>&, const DelaunayMesh&, const std::vector<uint32_t>&);
+  template Disturbed disturbed_simplices<D>(const Plc<D>&, const DelaunayMesh&, const std::vector<uint32_t>&, unsigned);
 SWEEPCDT_DISTURBED(2)
 SWEEPCDT_DISTURBED(3)
 SWEEPCDT_DISTURBED(4)
