@@ -74,10 +74,10 @@ Triangulation<D> assemble(const Plc<D>& plc, const DelaunayMesh& dt, const std::
   return tri;
 }
 
-// One cavity swept (cavity_cdt.cpp's step 4): its CDT, or failed.
-template <int D>
+// One cavity swept (step 4): its CDT's simplices, in the PLC's ids (the rest of its triangulation
+// is dropped in the job), or failed.
 struct Swept {
-  Triangulation<D> tri;
+  std::vector<uint32_t> simplices;
   bool failed = false;
   CdtStatistics stats;  // the sweep's counters
 };
@@ -88,9 +88,9 @@ struct Swept {
 // then). Progress is reported from the calling thread's sweeps only (a callback need not be
 // thread-safe); when it cancels, every sweep stops and CancelledError is thrown.
 template <int D>
-std::vector<Swept<D>> sweep_each(const Cavities<D>& cavities, const Options& options, bool validate_each) {
+std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& options, bool validate_each) {
   const std::size_t n = cavities.parts.size();
-  std::vector<Swept<D>> swept(n);
+  std::vector<Swept> swept(n);
   std::vector<std::size_t> order(n);
   for (std::size_t c = 0; c < n; ++c) order[c] = c;
   std::stable_sort(order.begin(), order.end(),
@@ -111,17 +111,19 @@ std::vector<Swept<D>> sweep_each(const Cavities<D>& cavities, const Options& opt
     const std::size_t c = order[k];
     if (stop.load(std::memory_order_relaxed)) return;
     const Plc<D>& plc = cavities.parts[c].plc;
-    Swept<D>& part = swept[c];
+    Swept& part = swept[c];
     try {
-      part.tri = sweep_cdt<D>(plc, seed_simplex(plc), each, part.stats);
+      Triangulation<D> tri = sweep_cdt<D>(plc, seed_simplex(plc), each, part.stats);
       // Without a CDT the sweep can also end with a triangulation that is none (a triangular
       // bipyramid whose two constraints meet at an edge that is not Delaunay: two tetrahedra, not
       // locally Delaunay between them); validate() finds that later, for the whole. Lazy refinement
       // needs the cavity, so it validates each.
       if (validate_each) {
-        compute_neighbors(part.tri);
-        part.failed = !validate<D>(part.tri, plc, ValidationLevel::Full, 1).ok();
+        compute_neighbors(tri);
+        part.failed = !validate<D>(tri, plc, ValidationLevel::Full, 1).ok();
       }
+      part.simplices = std::move(tri.simplices);
+      for (uint32_t& v : part.simplices) v = cavities.parts[c].global[v];
     } catch (const NoCdtError&) {
       part.failed = true;
       if (!validate_each) stop = true;
@@ -180,12 +182,12 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
       for (int i = 0; i < D; ++i)
         for (int j = i + 1; j < D; ++j) failed_edges->push_back({cavity.global[s[f + i]], cavity.global[s[f + j]]});
   };
-  const std::vector<Swept<D>> swept = sweep_each(cavities, options, failed_edges != nullptr);
+  std::vector<Swept> swept = sweep_each(cavities, options, failed_edges != nullptr);
   std::vector<uint32_t> cavity_simplices;
   std::vector<uint32_t> cavity_of;  // per cavity simplex, with failed_edges: its cavity
   bool failed = false;
   for (std::size_t c = 0; c < cavities.parts.size(); ++c) {
-    const Swept<D>& part = swept[c];
+    Swept& part = swept[c];
     stats.queue_pushes += part.stats.queue_pushes, stats.queue_pops += part.stats.queue_pops;
     stats.stale_pops += part.stats.stale_pops, stats.drop_moves += part.stats.drop_moves;
     if (part.failed) {
@@ -195,8 +197,9 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
       report(cavities.parts[c]);
       continue;
     }
-    for (const uint32_t v : part.tri.simplices) cavity_simplices.push_back(cavities.parts[c].global[v]);
-    if (failed_edges) cavity_of.insert(cavity_of.end(), part.tri.num_simplices(), static_cast<uint32_t>(c));
+    cavity_simplices.insert(cavity_simplices.end(), part.simplices.begin(), part.simplices.end());
+    if (failed_edges) cavity_of.insert(cavity_of.end(), part.simplices.size() / (D + 1), static_cast<uint32_t>(c));
+    part.simplices = {};
   }
   if (failed) return std::nullopt;
   if (!failed_edges) return assemble<D>(plc, dt, place, cavity_simplices);
