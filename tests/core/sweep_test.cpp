@@ -6,8 +6,10 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "brute_force_delaunay.h"
+#include "cad_noise.h"
 #include "off_reader.h"
 #include "sweepcdt/cdt.h"
 #include "triangulation_util.h"
@@ -154,6 +156,34 @@ TEST(Progress, CancelsTheDefaultPipelineAtEveryReport) {
     options.progress = [&](const Progress&) { return ++calls < stop_at; };
     EXPECT_THROW(cdt(plc, options), CancelledError) << "cancelled at report " << stop_at;
   }
+}
+
+// The cavity sweep sweeps its cavities on the threads (cavity_cdt.cpp), and the deletion pass plans
+// deletions on them: progress is still reported from the calling thread only (a host's callback —
+// Python, FreeCAD, MeshLab — need not be thread-safe). Noisy fins: many cavities, many deletions.
+TEST(Progress, ReportedFromTheCallingThreadOnly) {
+  std::vector<double> xs{0, 1}, tops{0.2};
+  for (int fin = 0; fin < 30; ++fin) {
+    xs.insert(xs.end(), {xs.back() + 0.02, xs.back() + 0.22});
+    tops.insert(tops.end(), {1.0, 0.2 + 0.01 * fin});
+  }
+  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  Options options = mesh_defaults();
+  options.threads = 4;
+  CdtStatistics stats;
+  options.statistics = &stats;
+  const std::thread::id caller = std::this_thread::get_id();
+  int reports = 0, elsewhere = 0;
+  options.progress = [&](const Progress&) {
+    ++reports;
+    if (std::this_thread::get_id() != caller) ++elsewhere;
+    return true;
+  };
+  ASSERT_NO_THROW(cdt(fins, options));
+  EXPECT_GT(reports, 0);
+  EXPECT_EQ(elsewhere, 0);
+  EXPECT_GT(stats.cavity_tetrahedra, 100u) << "no cavities: their sweeps on threads are not exercised";
+  EXPECT_GT(stats.steiner_deletions_tried, 1024u) << "too few deletions to plan them on threads";
 }
 
 // Refinement's Delaunay tetrahedralization reports progress ("Delaunay") and can be cancelled there,
