@@ -68,7 +68,8 @@ struct CdtStatistics {
   uint64_t steiner_attempts = 0;
   uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
   // The deletion pass: deletions worked out (each a star CDT), and retries of refused points skipped
-  // because no vertex of their refusal's witness went (core/src/edit/remove_steiner.cpp).
+  // because no vertex of their refusal's witness, nor of a constraint through them, went since
+  // (core/src/edit/remove_steiner.cpp).
   uint64_t steiner_deletions_tried = 0, steiner_retries_skipped = 0;
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
                                          // edge flips that gave each its 2D CDT
