@@ -160,8 +160,10 @@ TEST(Progress, CancelsTheDefaultPipelineAtEveryReport) {
 
 // The cavity sweep sweeps its cavities on the threads (cavity_cdt.cpp), and the deletion pass plans
 // deletions on them: progress is still reported from the calling thread only (a host's callback —
-// Python, FreeCAD, MeshLab — need not be thread-safe). Noisy fins: many cavities, many deletions.
-TEST(Progress, ReportedFromTheCallingThreadOnly) {
+// Python, FreeCAD, MeshLab — need not be thread-safe), and cancelling while the cavities are swept
+// ("cavities": reported after each the calling thread sweeps, and once when all are) stops them.
+// Noisy fins: many cavities, many deletions.
+TEST(Progress, ReportedFromTheCallingThreadOnlyAndCancelsTheCavities) {
   std::vector<double> xs{0, 1}, tops{0.2};
   for (int fin = 0; fin < 30; ++fin) {
     xs.insert(xs.end(), {xs.back() + 0.02, xs.back() + 0.22});
@@ -173,17 +175,24 @@ TEST(Progress, ReportedFromTheCallingThreadOnly) {
   CdtStatistics stats;
   options.statistics = &stats;
   const std::thread::id caller = std::this_thread::get_id();
-  int reports = 0, elsewhere = 0;
-  options.progress = [&](const Progress&) {
+  int reports = 0, elsewhere = 0, cavities = 0;
+  options.progress = [&](const Progress& p) {
     ++reports;
     if (std::this_thread::get_id() != caller) ++elsewhere;
+    if (std::string(p.phase) == "cavities") {
+      ++cavities;
+      EXPECT_LE(p.done, p.total);
+    }
     return true;
   };
   ASSERT_NO_THROW(cdt(fins, options));
   EXPECT_GT(reports, 0);
   EXPECT_EQ(elsewhere, 0);
+  EXPECT_GT(cavities, 0);
   EXPECT_GT(stats.cavity_tetrahedra, 100u) << "no cavities: their sweeps on threads are not exercised";
   EXPECT_GT(stats.steiner_deletions_tried, 1024u) << "too few deletions to plan them on threads";
+  options.progress = [](const Progress& p) { return std::string(p.phase) != "cavities"; };
+  EXPECT_THROW(cdt(fins, options), CancelledError);
 }
 
 // Refinement's Delaunay tetrahedralization reports progress ("Delaunay") and can be cancelled there,

@@ -85,8 +85,9 @@ struct Swept {
 // Every cavity swept, on options.threads threads: the cavities are independent (the domain split by
 // the kept Delaunay simplices), so each is one job, the largest first; the results do not depend on
 // the threads. Without `validate_each` the sweeps stop at the first failure (the caller gives up
-// then). Progress is reported from the calling thread's sweeps only (a callback need not be
-// thread-safe); when it cancels, every sweep stops and CancelledError is thrown.
+// then). Progress is reported from the calling thread only (a callback need not be thread-safe):
+// from its sweeps, after each cavity it sweeps and once at the end ("cavities": swept of all);
+// when it cancels, every sweep stops and CancelledError is thrown.
 template <int D>
 std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& options, bool validate_each) {
   const std::size_t n = cavities.parts.size();
@@ -107,6 +108,10 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
       return false;
     };
   std::vector<std::exception_ptr> errors(n);
+  std::atomic<std::size_t> done{0};
+  const auto report = [&](std::size_t swept_now) {
+    if (options.progress && !cancelled && !options.progress({"cavities", swept_now, n})) cancelled = true;
+  };
   const std::function<void(std::size_t)> sweep = [&](std::size_t k) {
     const std::size_t c = order[k];
     if (stop.load(std::memory_order_relaxed)) return;
@@ -131,6 +136,8 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
       errors[c] = std::current_exception();
       stop = true;
     }
+    const std::size_t swept_now = ++done;
+    if (std::this_thread::get_id() == caller) report(swept_now);
   };
   const unsigned threads = n > 1 ? std::min<unsigned>(thread_count(options.threads), static_cast<unsigned>(n)) : 1;
   if (threads > 1) {
@@ -138,9 +145,10 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
   } else {
     for (std::size_t k = 0; k < n; ++k) sweep(k);
   }
-  if (cancelled) throw CancelledError();
   for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+    if (e && !cancelled) std::rethrow_exception(e);
+  if (n > 0) report(n);
+  if (cancelled) throw CancelledError();
   return swept;
 }
 
