@@ -35,19 +35,6 @@ Plc<3> comb(int teeth) {
   return fixtures::extruded_columns(xs, tops, 3);
 }
 
-// Thin fins whose faces are a few ulps off flat (CAD rounding noise): many Steiner points, and a
-// refined PLC whose bent facets miss many Delaunay faces (the cavity sweep's cavities).
-Plc<3> noisy_fins(int fins) {
-  std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < fins; ++fin) {
-    xs.push_back(xs.back() + 0.02);
-    tops.push_back(1.0);
-    xs.push_back(xs.back() + 0.2);
-    tops.push_back(0.2 + 0.01 * fin);
-  }
-  return sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
-}
-
 // `copies` copies of `plc`, each shifted by `step` along x: overlapping bodies when step is small.
 Plc<3> copies_of(const Plc<3>& plc, int copies, double step) {
   Plc<3> all;
@@ -114,7 +101,7 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
   std::uniform_real_distribution<double> u(0, 1);
   Plc<3> points;
   for (int i = 0; i < 3 * 6000; ++i) points.points.push_back(u(rng));
-  for (const auto& [what, plc] : {std::pair{"random points", points}, std::pair{"comb", comb(600)}, std::pair{"noisy fins", noisy_fins(12)}}) {
+  for (const auto& [what, plc] : {std::pair{"random points", points}, std::pair{"comb", comb(600)}, std::pair{"noisy fins", sweepcdt::testing::noisy_fins(7, 12)}}) {
     for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere}) {
       Options one = std::string(what) != "random points" ? mesh_defaults() : Options{};
       one.remove_steiner_points = false;
@@ -179,7 +166,7 @@ TEST(Parallel, ConstraintFacesAsABruteForceLookupFindsThem) {
 // what the converter sweeps on CAD parts: noisy fins refined with Steiner points, whose bent facets
 // miss many Delaunay faces.
 TEST(Parallel, DisturbedSimplicesAsOneThreadFindsThem) {
-  const Plc<3> fins = noisy_fins(30);
+  const Plc<3> fins = sweepcdt::testing::noisy_fins(7, 30);
   Options options = mesh_defaults();
   options.remove_steiner_points = false;
   Plc<3> refined;
@@ -199,7 +186,7 @@ TEST(Parallel, DisturbedSimplicesAsOneThreadFindsThem) {
 // The deletion pass (remove_steiner.h) works deletions out on several threads and applies them in
 // the order of one: the same points deleted, the same tetrahedra in the same order.
 TEST(Parallel, SteinerPointsDeletedAsOneThreadDeletesThem) {
-  const Plc<3> fins = noisy_fins(12);
+  const Plc<3> fins = sweepcdt::testing::noisy_fins(7, 12);
   Options one = mesh_defaults(), many = mesh_defaults();
   one.threads = 1;
   many.threads = kMany;

@@ -164,12 +164,7 @@ TEST(Progress, CancelsTheDefaultPipelineAtEveryReport) {
 // ("cavities": reported after each the calling thread sweeps, and once when all are) stops them.
 // Noisy fins: many cavities, many deletions.
 TEST(Progress, ReportedFromTheCallingThreadOnlyAndCancelsTheCavities) {
-  std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < 30; ++fin) {
-    xs.insert(xs.end(), {xs.back() + 0.02, xs.back() + 0.22});
-    tops.insert(tops.end(), {1.0, 0.2 + 0.01 * fin});
-  }
-  const Plc<3> fins = sweepcdt::testing::with_cad_noise(fixtures::extruded_columns(xs, tops, 1.0), 0.5, 7);
+  const Plc<3> fins = sweepcdt::testing::noisy_fins(7, 30);
   Options options = mesh_defaults();
   options.threads = 4;
   CdtStatistics stats;

@@ -242,7 +242,7 @@ TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   EXPECT_GE(stats.steiner_attempts, 2u);
   ASSERT_GT(stats.steiner_points_removed, 500u);
   ASSERT_GT(stats.steiner_points, 1000u);
-  EXPECT_GT(stats.steiner_retries_skipped, 100u);  // 515 in session 23
+  EXPECT_GT(stats.steiner_retries_skipped, 100u);  // 172 of 6084 attempts in session 23
   EXPECT_GT(stats.steiner_deletions_tried, stats.steiner_points + stats.steiner_points_removed);
   EditableCdt<3> mesh(refined, tri);
   std::vector<uint32_t> neighbours;

@@ -31,12 +31,13 @@ inline Plc<3> with_cad_noise(Plc<3> plc, double fraction, uint64_t seed) {
   return plc;
 }
 
-// Four thin fins (fixtures::extruded_columns) with CAD noise on half the coordinates: Steiner points
-// made from their segments' ends and from pieces, folds, points rounded off their segments. `seed`
+// `fins` thin fins (fixtures::extruded_columns) with CAD noise on half the coordinates: Steiner
+// points made from their segments' ends and from pieces, folds, points rounded off their segments,
+// and a refined PLC whose bent facets miss many Delaunay faces (the cavity sweep's cavities). `seed`
 // picks the noise.
-inline Plc<3> noisy_fins(uint64_t seed = 7) {
+inline Plc<3> noisy_fins(uint64_t seed = 7, int fins = 4) {
   std::vector<double> xs{0, 1}, tops{0.2};
-  for (int fin = 0; fin < 4; ++fin) {
+  for (int fin = 0; fin < fins; ++fin) {
     xs.push_back(xs.back() + 0.02);
     tops.push_back(1.0);
     xs.push_back(xs.back() + 0.2);
