@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 
@@ -320,6 +321,23 @@ TEST(Delaunay3, EdgesKeptUpToDateAsPointsAreAdded) {
     std::mt19937_64 rng(500 + seed);
     expect_incremental_edges(fixtures::distinct_grid_points<3>(rng, 120, 4), "grid " + std::to_string(seed));
   }
+}
+
+// rebind: a triangulation handed on to another copy of its points (lazy refinement's next attempt,
+// steiner/refine.cpp) reads them there, the old vector gone, and goes on inserting the points
+// appended to the new one: the same edges as a triangulation built from scratch.
+TEST(Delaunay3, EdgesReboundToACopyOfThePoints) {
+  const std::vector<double> all = random_points(120, 77);
+  auto first = std::make_unique<std::vector<double>>(all.begin(), all.begin() + 3 * 80);
+  detail::DelaunayEdges edges(*first);
+  std::vector<double> copy = *first;
+  first.reset();
+  edges.rebind(copy);
+  copy.insert(copy.end(), all.begin() + 3 * 80, all.end());
+  edges.insert_new_points();
+  const auto expected = edges_of(copy);
+  for (uint32_t a = 0; a < 120; ++a)
+    for (uint32_t b = a + 1; b < 120; ++b) ASSERT_EQ(edges.has_edge(a, b), expected.count({a, b}) > 0) << a << " " << b;
 }
 
 // Not a timing assertion: prints both times for the report (bench/sweep_bench cube-points 33000).

@@ -403,6 +403,34 @@ TEST(Steiner, RefinesOnlyTheRequiredSegments) {
   }
 }
 
+// Lazy refinement's attempts (cdt.cpp) refine the same input again and again; the first, with nothing
+// required, adds no point, so it hands the Delaunay tetrahedralization of the input points back, and
+// the next starts from it instead of computing it again. The result is the same refined PLC, point
+// for point and triangle for triangle, as refining from scratch; an attempt that adds points keeps
+// the tetrahedralization (it holds them now), so the one after computes its own.
+TEST(Steiner, LaterRefinementsStartFromTheInputsTetrahedralization) {
+  const Plc<3> comb = fixtures::extruded_columns({0, 1, 1.2, 3, 3.1, 5}, {3, 0.5, 3, 0.2, 4}, 2);
+  const Options options = mesh_defaults();
+  const detail::RequiredSegments none;
+  detail::RequiredSegments all;
+  for (std::size_t t = 0; t < comb.num_simplices(); ++t)
+    for (int i = 0; i < 3; ++i) all.insert(detail::edge_key(comb.simplex(t)[i], comb.simplex(t)[(i + 1) % 3]));
+  std::unique_ptr<detail::DelaunayEdges> kept;
+  const detail::RefinedPlc first = detail::refine(comb, options, &none, detail::Folds::LeftAsTheyAre, &kept);
+  ASSERT_TRUE(first.steiner_on.empty());
+  ASSERT_NE(kept, nullptr) << "no point added, yet the tetrahedralization was not handed back";
+  const detail::RefinedPlc again = detail::refine(comb, options, &all, detail::Folds::LeftAsTheyAre, &kept);
+  const detail::RefinedPlc fresh = detail::refine(comb, options, &all, detail::Folds::LeftAsTheyAre);
+  ASSERT_GT(fresh.steiner_on.size(), 0u) << "the comb needs Steiner points: nothing exercised";
+  EXPECT_EQ(kept, nullptr) << "a tetrahedralization holding Steiner points was handed back";
+  EXPECT_EQ(again.plc.points, fresh.plc.points);
+  EXPECT_EQ(again.plc.simplices, fresh.plc.simplices);
+  EXPECT_EQ(again.on_segment, fresh.on_segment);
+  ASSERT_TRUE(again.delaunay && fresh.delaunay);
+  EXPECT_EQ(again.delaunay->tets, fresh.delaunay->tets);
+  EXPECT_EQ(again.delaunay->neighbors, fresh.delaunay->neighbors);
+}
+
 // Float surfaces get Steiner points lazily (cdt.cpp): only where a cavity finds no CDT. A comb of
 // thin fins has a CDT as given: none, in one refinement, where refining every segment (the same comb
 // a hair off floats takes that path) adds some. Schönhardt's prism has none: its segments are

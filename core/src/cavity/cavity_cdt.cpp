@@ -156,7 +156,8 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
 
 template <int D>
 std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
-                                           const DelaunayMesh* delaunay, std::vector<std::array<uint32_t, 2>>* failed_edges) {
+                                           const DelaunayMesh* delaunay, std::vector<std::array<uint32_t, 2>>* failed_edges,
+                                           const std::function<void()>& all_swept) {
   const std::size_t n = plc.num_points();
   DelaunayMesh computed;
   if (!delaunay) {
@@ -210,6 +211,7 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
     part.simplices = {};
   }
   if (failed) return std::nullopt;
+  if (all_swept) all_swept();
   if (!failed_edges) return assemble<D>(plc, dt, place, cavity_simplices);
   std::vector<uint32_t> not_delaunay;
   Triangulation<D> tri = assemble<D>(plc, dt, place, cavity_simplices, &not_delaunay);
@@ -221,12 +223,12 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
 }
 
 template std::optional<Triangulation<2>> cavity_cdt<2>(const Plc<2>&, const Options&, CdtStatistics&, const DelaunayMesh*,
-                                                          std::vector<std::array<uint32_t, 2>>*);
+                                                          std::vector<std::array<uint32_t, 2>>*, const std::function<void()>&);
 template std::optional<Triangulation<3>> cavity_cdt<3>(const Plc<3>&, const Options&, CdtStatistics&, const DelaunayMesh*,
-                                                          std::vector<std::array<uint32_t, 2>>*);
+                                                          std::vector<std::array<uint32_t, 2>>*, const std::function<void()>&);
 template std::optional<Triangulation<4>> cavity_cdt<4>(const Plc<4>&, const Options&, CdtStatistics&, const DelaunayMesh*,
-                                                          std::vector<std::array<uint32_t, 2>>*);
+                                                          std::vector<std::array<uint32_t, 2>>*, const std::function<void()>&);
 template std::optional<Triangulation<5>> cavity_cdt<5>(const Plc<5>&, const Options&, CdtStatistics&, const DelaunayMesh*,
-                                                          std::vector<std::array<uint32_t, 2>>*);
+                                                          std::vector<std::array<uint32_t, 2>>*, const std::function<void()>&);
 
 }  // namespace sweepcdt::detail

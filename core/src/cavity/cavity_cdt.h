@@ -22,6 +22,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -40,9 +41,12 @@ namespace sweepcdt::detail {
 // finds no CDT, and the edges of those that do not (their facets' edges, in plc's ids, in no
 // particular order, repeated) are appended, and of those whose CDT does not fit the kept simplices
 // around them (then the PLC has no CDT either): lazy Steiner refinement (cdt.cpp) splits there.
+// `all_swept`: called once every cavity has its CDT, before they are put together with the kept
+// simplices (lazy refinement frees then what it kept for another attempt).
 template <int D>
 std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
                                            const DelaunayMesh* delaunay = nullptr,
-                                           std::vector<std::array<uint32_t, 2>>* failed_edges = nullptr);
+                                           std::vector<std::array<uint32_t, 2>>* failed_edges = nullptr,
+                                           const std::function<void()>& all_swept = {});
 
 }  // namespace sweepcdt::detail

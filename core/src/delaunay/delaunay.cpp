@@ -143,7 +143,9 @@ class Delaunay {
   static constexpr std::size_t kCellsPerPoint = D == 2 ? 4 : D == 3 ? 7 : D == 4 ? 32 : 160;
 
  public:
-  explicit Delaunay(const std::vector<double>& points) : points_(points) {}
+  explicit Delaunay(const std::vector<double>& points) : points_(&points) {}
+  // The same points in another vector (its first num_inserted() points equal to these).
+  void rebind(const std::vector<double>& points) { points_ = &points; }
 
   std::vector<Simplex> run(const std::vector<uint32_t>& order) {
     build(order);
@@ -151,7 +153,7 @@ class Delaunay {
   }
 
   void build(const std::vector<uint32_t>& order, const std::function<void(std::size_t)>& inserted = {}) {
-    const std::size_t n = points_.size() / D;
+    const std::size_t n = points_->size() / D;
     vertex_simplex_.assign(n, kInfinite);
     touched_round_.assign(n, round_);
     changed_.resize(n);
@@ -187,7 +189,7 @@ class Delaunay {
 
   // Inserts the points with ids from vertex_simplex_.size() on (appended to the points since).
   void insert_new_points() {
-    const std::size_t first = vertex_simplex_.size(), n = points_.size() / D;
+    const std::size_t first = vertex_simplex_.size(), n = points_->size() / D;
     if (n == first) return;  // nothing changed: keep what touched() says
     vertex_simplex_.resize(n, kInfinite);
     first_new_ = static_cast<uint32_t>(first);
@@ -195,7 +197,7 @@ class Delaunay {
     touched_round_.resize(n, round_);
     changed_.resize(n - first);
     std::iota(changed_.begin(), changed_.end(), static_cast<uint32_t>(first));
-    const std::vector<double> added(points_.begin() + D * first, points_.end());
+    const std::vector<double> added(points_->begin() + D * first, points_->end());
     for (const uint32_t k : brio_order<D>(added)) insert(static_cast<uint32_t>(first + k));
   }
 
@@ -239,9 +241,9 @@ class Delaunay {
 
  private:
   Vertex vertex(uint32_t id) const {
-    return Vertex{id == kInfinite ? nullptr : points_.data() + D * std::size_t{id}, id};
+    return Vertex{id == kInfinite ? nullptr : points_->data() + D * std::size_t{id}, id};
   }
-  const double* coords(uint32_t id) const { return points_.data() + D * std::size_t{id}; }
+  const double* coords(uint32_t id) const { return points_->data() + D * std::size_t{id}; }
 
   // The simplex's vertices with vertex `i` replaced by p (i = D + 1: none replaced).
   Vertices<D + 1> with(uint32_t t, int i, const Vertex& p) const {
@@ -556,7 +558,7 @@ class Delaunay {
     return result;
   }
 
-  const std::vector<double>& points_;
+  const std::vector<double>* points_;
   // A simplex: its vertices and, per facet i (opposite v[i]), the link to the neighbour across it.
   // One array, so a walk step touches one cache line (in 3D).
   struct Cell {
@@ -597,8 +599,8 @@ void check_points(const std::vector<double>& points, std::size_t first = 0) {
 }  // namespace
 
 struct DelaunayEdges::Impl {
-  explicit Impl(const std::vector<double>& p) : points(p), triangulation(p) {}
-  const std::vector<double>& points;
+  explicit Impl(const std::vector<double>& p) : points(&p), triangulation(p) {}
+  const std::vector<double>* points;
   Delaunay<3> triangulation;
 };
 
@@ -610,8 +612,13 @@ DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const std::funct
 
 DelaunayEdges::~DelaunayEdges() = default;
 
+void DelaunayEdges::rebind(const std::vector<double>& points) {
+  impl_->points = &points;
+  impl_->triangulation.rebind(points);
+}
+
 void DelaunayEdges::insert_new_points() {
-  check_points<3>(impl_->points, impl_->triangulation.num_inserted());
+  check_points<3>(*impl_->points, impl_->triangulation.num_inserted());
   impl_->triangulation.insert_new_points();
 }
 

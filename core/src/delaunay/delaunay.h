@@ -58,6 +58,9 @@ class DelaunayEdges {
   // as for delaunay_mesh (it may throw to cancel).
   explicit DelaunayEdges(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
   ~DelaunayEdges();
+  // Reads the points from `points` from now on: a copy of the vector given so far, or a longer one
+  // that starts with its points (it must outlive this object).
+  void rebind(const std::vector<double>& points);
   // Inserts the points appended to `points` since the last call (or the construction), if any.
   void insert_new_points();
   // Whether ab is an edge of the triangulation (a and b inserted points).

@@ -51,6 +51,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <unordered_set>
 #include <vector>
@@ -94,7 +95,11 @@ enum class Folds { MadeDelaunay, LeftAsTheyAre };
 // With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar). `required`: only
 // those input segments are split (and the folds and segments that points inside facets need); null:
 // every segment, so that the refined PLC has a CDT by the theorem (with Folds::MadeDelaunay).
+// `input_delaunay`: when it holds a triangulation, the Delaunay tetrahedralization of input.points
+// that an earlier call handed back, refinement starts from it instead of computing it again; when
+// refinement adds no Steiner point, the tetrahedralization is handed back there (lazy refinement's
+// attempts, cdt.cpp: the first, with nothing required, adds none). The result is the same either way.
 RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr,
-                  Folds folds = Folds::MadeDelaunay);
+                  Folds folds = Folds::MadeDelaunay, std::unique_ptr<DelaunayEdges>* input_delaunay = nullptr);
 
 }  // namespace sweepcdt::detail
