@@ -5,7 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include <gmpxx.h>
+
 #include "predicate_test_util.h"
+#include "wide_int.h"
 #include "sweepcdt/predicates/ray_box.h"
 
 namespace {
@@ -252,6 +255,83 @@ void wide_range_case() {
 TEST(FastPath, WideBinaryRangeOrientInsphere2) { wide_range_case<2>(); }
 TEST(FastPath, WideBinaryRangeOrientInsphere3) { wide_range_case<3>(); }
 TEST(FastPath, WideBinaryRangeOrientInsphere4) { wide_range_case<4>(); }
+
+// Int192 (wide_int.h) on its own, against GMP: products of values up to 2^95 in magnitude, sums
+// and differences of them, of every sign, with runs of one bits (carries and borrows across the
+// limbs) and at random. Values go in and out as two's complement limbs.
+TEST(FastPath, Int192ArithmeticAgainstGmp) {
+  namespace d = pr::detail;
+  const mpz_class modulus = mpz_class(1) << 192;
+  const auto value_of = [&](const d::Int192& x) {
+    mpz_class v = 0;
+    for (int k = 2; k >= 0; --k) v = (v << 64) + mpz_class(static_cast<unsigned long>(x.limb[k]));
+    return x.limb[2] >> 63 ? mpz_class(v - modulus) : v;
+  };
+  const auto int192_of = [&](const mpz_class& v) {
+    mpz_class u = v < 0 ? mpz_class(v + modulus) : v;
+    d::Int192 x;
+    for (int k = 0; k < 3; ++k) {
+      x.limb[k] = mpz_class(u & ((mpz_class(1) << 64) - 1)).get_ui();
+      u >>= 64;
+    }
+    return x;
+  };
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(0x192);
+  Rng rng(0x192);
+  for (int n = 0; n < 20000; ++n) {
+    mpz_class v[2];
+    for (mpz_class& x : v) {
+      const int bits = uniform_int(rng, 1, 95);
+      x = uniform_int(rng, 0, 3) == 0 ? mpz_class((mpz_class(1) << bits) - 1) : mpz_class(random.get_z_bits(bits));
+      if (uniform_int(rng, 0, 1)) x = -x;
+    }
+    const d::Int192 a = int192_of(v[0]), b = int192_of(v[1]);
+    ASSERT_EQ(value_of(d::Int192::from_int64(-n)), -n);
+    ASSERT_EQ(value_of(a * b), v[0] * v[1]) << n;
+    ASSERT_EQ(value_of(a + b), v[0] + v[1]) << n;
+    ASSERT_EQ(value_of(a - b), v[0] - v[1]) << n;
+    ASSERT_EQ(value_of(-a), -v[0]) << n;
+    ASSERT_EQ((a * b).sign(), sgn(v[0] * v[1])) << n;
+    ASSERT_EQ((a - b).sign(), sgn(v[0] - v[1])) << n;
+  }
+}
+
+// Float coordinates of CAD parts and scans: a few dozen bits of binary range, so a 3D insphere test
+// needs 128 to 192 bits (the two's complement Int192 of wide_int.h). Their exact calls are mostly
+// exact zeros: a hole's circle on the top and bottom face lies on one sphere. Points on such pairs
+// of circles (Pythagorean offsets, so exactly on them) about float centres at several scales, one
+// coordinate moved by one float ulp in two cases of three, and random float points; orient and
+// insphere against the rational reference.
+TEST(FastPath, FloatCadCoordinatesOrientInsphere3) {
+  Rng rng(0xf10a7);
+  FailureBudget budget;
+  int zeros = 0;
+  const int offsets[][2] = {{3, 4}, {4, 3}, {-3, 4}, {5, 0}, {0, -5}, {-4, -3}, {3, -4}, {-5, 0}};
+  for (int n = 0; n < 1500; ++n) {
+    const double unit = std::ldexp(1.0, uniform_int(rng, -17, -8));  // the offsets' scale: floats stay floats
+    Point<3> centre;
+    for (double& c : centre) c = std::round(uniform(rng, -60.0, 60.0) / unit) * unit;
+    const double height = uniform_int(rng, 1, 6) * unit;
+    std::array<Point<3>, 5> pts;
+    for (auto& p : pts) {
+      if (n % 5 == 4) {  // random floats
+        for (double& x : p) x = static_cast<float>(uniform(rng, -60.0, 60.0));
+        continue;
+      }
+      const auto& o = offsets[uniform_int(rng, 0, 7)];
+      p = {centre[0] + o[0] * unit, centre[1] + o[1] * unit, centre[2] + (uniform_int(rng, 0, 1) ? height : -height)};
+      for (const double x : p) ASSERT_EQ(static_cast<double>(static_cast<float>(x)), x) << "not a float: the test is wrong";
+    }
+    if (const int mode = n % 3; mode != 0) {
+      double& x = pts[uniform_int(rng, 0, 4)][uniform_int(rng, 0, 2)];
+      x = std::nextafter(static_cast<float>(x), mode == 1 ? 1e30f : -1e30f);
+    }
+    check_orient_insphere<3>(pts, budget, zeros);
+  }
+  EXPECT_EQ(budget.failures, 0);
+  EXPECT_GT(zeros, 150) << "too few exact zeros";
+}
 
 // Non-finite input is not an exact zero: the exact stage still reports it.
 TEST(FastPath, EqualNonFinitePointsAreNotZero) {
