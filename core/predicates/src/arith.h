@@ -175,7 +175,7 @@ Sign exact_sign(const Formula& formula) {
   const auto run = [&](auto arith) { return static_cast<Sign>(formula(arith).sign()); };
   if (narrow && value_bits < 2 * 64) return run(Int128Arith{scan.lowest_bit});  // |value| < 2^127: cheap
   // Up to four limbs the integers cost no more than the double-words below (a 3D insphere test on
-  // float CAD coordinates, 138 bits: 0.9 us in double-words, 1.0 us in WideInt<4>, far less in
+  // float CAD coordinates, 138 bits: 0.9 us in double-words, 1.0 us in WideInt<4>, 0.6 us in
   // Int192), and there the exact calls are mostly exact zeros, which the double-words cannot
   // decide: cospherical CAD vertices, such as a hole's two circles (all 4032 of
   // plate_with_holes_std's exact 3D insphere tests, 2683 of filleted_box_fine's 2700). So straight
