@@ -15,6 +15,7 @@
 
 #include "cavity/cavity_cdt.h"
 #include "delaunay/in_background.h"
+#include "delaunay/kept_tetrahedralization.h"
 #include "parallel.h"
 #include "gift_wrap.h"
 #include "regions.h"
@@ -202,9 +203,8 @@ bool all_float(const std::vector<double>& points) {
 }
 
 std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
-                                              detail::RefinedPlc& refined) {
+                                              detail::RefinedPlc& refined, std::unique_ptr<detail::DelaunayEdges> input_delaunay) {
   detail::RequiredSegments required;
-  std::unique_ptr<detail::DelaunayEdges> input_delaunay;
   for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
     ++stats.steiner_attempts;
     try {
@@ -240,9 +240,9 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
 // made Delaunay after all: nullopt, with `refined` refined again, which the caller triangulates (as
 // it does when no fold was left, the theorem's premise holding already).
 std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
-                                                     detail::RefinedPlc& refined) {
+                                                     detail::RefinedPlc& refined, std::unique_ptr<detail::DelaunayEdges> input_delaunay) {
   ++stats.steiner_attempts;
-  refined = detail::refine(plc, options, nullptr, detail::Folds::LeftAsTheyAre);
+  refined = detail::refine(plc, options, nullptr, detail::Folds::LeftAsTheyAre, &input_delaunay);
   take_refined(refined, options, stats, clock);
   if (refined.folds_left == 0) return std::nullopt;
   if (options.algorithm == Algorithm::CavitySweep) {
@@ -272,8 +272,16 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       detail::RefinedPlc refined;
       std::optional<Triangulation<3>> swept;  // found while refining
       if (options.steiner == SteinerMode::Auto) {
-        if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points)) swept = refine_lazily(plc, options, stats, clock, refined);
-        if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined);
+        // The importer's check may have tetrahedralized the points meanwhile (kept_tetrahedralization.h).
+        bool cancelled = false;
+        std::unique_ptr<detail::DelaunayEdges> input_delaunay = detail::take_kept_tetrahedralization(plc, [&](std::size_t inserted) {
+          cancelled = options.progress && !options.progress({"Delaunay", inserted, plc.num_points()});
+          return !cancelled;
+        });
+        if (cancelled) throw CancelledError();
+        if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
+          swept = refine_lazily(plc, options, stats, clock, refined, std::move(input_delaunay));
+        if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined, std::move(input_delaunay));
       } else {
         ++stats.steiner_attempts;
         refined = detail::refine(plc, options);
@@ -379,6 +387,9 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   // The cavity sweep's Delaunay triangulation beside a full check, given a second thread (with
   // Steiner points, in 3D, refinement computes its own as it goes; other dimensions have none).
   const bool refines = D == 3 && options.steiner == SteinerMode::Auto;
+  // An importer's tetrahedralization of the points serves refinement only (run()): stopped otherwise.
+  if constexpr (D == 3)
+    if (!refines) detail::drop_kept_tetrahedralization(plc);
   std::optional<detail::DelaunayInBackground<D>> delaunay;
   if (options.algorithm == Algorithm::CavitySweep && !refines && !stats.check_recorded && detail::thread_count(options.threads) > 1)
     delaunay.emplace(plc.points);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "box_tree.h"
+#include "delaunay/kept_tetrahedralization.h"
 #include "parallel.h"
 #include "refined_check.h"
 #include "simplex_intersection.h"
@@ -208,9 +209,13 @@ bool PlcCheck<D>::covers(const Plc<D>& plc) const {
          (points_.empty() || std::memcmp(plc.points.data(), points_.data(), points_.size() * sizeof(double)) == 0);
 }
 
+namespace {
+
+// find_problems(), and find_problems_before_cdt() with `kept` (its tetrahedralization under way).
 template <int D>
-std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total,
-                                      std::shared_ptr<const PlcCheck<D>>* record, unsigned threads) {
+std::vector<PlcProblem> find_problems_keeping(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total,
+                                              std::shared_ptr<const PlcCheck<D>>* record, unsigned threads,
+                                              std::shared_ptr<detail::KeptTetrahedralization> kept) {
   ProblemList problems(limit_per_kind);
   if (check_structure(plc, problems) && !(plc.checked && plc.checked->covers(plc))) {
     check_duplicate_points(plc, problems);
@@ -220,9 +225,29 @@ std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_k
   if (total) *total = problems.total();
   if (record) {
     record->reset();
-    if (problems.total() == 0) record->reset(new PlcCheck<D>(plc.points, plc.simplices));
+    if (problems.total() == 0) *record = detail::PlcCheckAccess::make<D>(plc, std::move(kept));
   }
   return problems.take();
+}
+
+}  // namespace
+
+template <int D>
+std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind, uint64_t* total,
+                                      std::shared_ptr<const PlcCheck<D>>* record, unsigned threads) {
+  return find_problems_keeping<D>(plc, limit_per_kind, total, record, threads, nullptr);
+}
+
+// The tetrahedralization takes a thread of its own and the checks the others (as in cdt(): they
+// share no data), when there is a record to keep it in, a second thread, and a PLC not checked
+// already. A PLC with problems gets no record, and its tetrahedralization is stopped.
+std::vector<PlcProblem> find_problems_before_cdt(const Plc<3>& plc, std::size_t limit_per_kind, uint64_t* total,
+                                                 std::shared_ptr<const PlcCheck<3>>* record, unsigned threads) {
+  const unsigned available = detail::thread_count(threads);
+  std::shared_ptr<detail::KeptTetrahedralization> kept;
+  if (record && available > 1 && plc.num_points() >= 4 && !(plc.checked && plc.checked->covers(plc)))
+    kept = std::make_shared<detail::KeptTetrahedralization>(plc.points);
+  return find_problems_keeping<3>(plc, limit_per_kind, total, record, kept ? available - 1 : threads, std::move(kept));
 }
 
 template <int D>

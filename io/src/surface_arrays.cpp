@@ -49,7 +49,7 @@ Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance, SnapReport* snapped,
     point_ids->assign(soup.num_points(), kNone);
     for (std::size_t c = 0; c < soup.triangles.size(); ++c) (*point_ids)[soup.triangles[c]] = surface.triangles[c];
   }
-  return to_plc(surface, inspect(surface));
+  return to_plc(surface, inspect(surface, 10, true));  // about to be meshed
 }
 
 }  // namespace sweepcdt::io

@@ -42,7 +42,7 @@ struct EdgeUse {
 
 class Inspector {
  public:
-  Inspector(const Surface& s, std::size_t limit) : s_(s), limit_(limit), m_(s.num_triangles()) {
+  Inspector(const Surface& s, std::size_t limit, bool before_cdt) : s_(s), limit_(limit), before_cdt_(before_cdt), m_(s.num_triangles()) {
     r_.file = s.file;
     r_.format = s.format;
     r_.triangles = m_;
@@ -277,7 +277,8 @@ class Inspector {
     uint64_t total = 0;
     // With every triangle usable, plc has the surface's points and triangles in the same order (weld()
     // numbers points by first use), so the record covers to_plc()'s PLC.
-    const auto problems = find_problems(plc, limit_, &total, &r_.checked);
+    const auto problems =
+        before_cdt_ ? find_problems_before_cdt(plc, limit_, &total, &r_.checked) : find_problems(plc, limit_, &total, &r_.checked);
     for (const auto& p : problems) {
       // Distinct points, all used, no degenerate or duplicate simplex: only intersections remain.
       if (p.kind != PlcProblemKind::Intersection) continue;
@@ -306,6 +307,7 @@ class Inspector {
 
   const Surface& s_;
   std::size_t limit_;
+  bool before_cdt_;  // inspect()
   uint32_t m_;
   SurfaceReport r_;
   std::vector<uint8_t> usable_, named_twice_, flip_;
@@ -338,9 +340,9 @@ void SurfaceReport::throw_if_invalid() const {
   throw SurfaceError(file, problems, std::vector<uint64_t>(counts.begin(), counts.end()));
 }
 
-SurfaceReport inspect(const Surface& surface, std::size_t limit_per_kind) {
+SurfaceReport inspect(const Surface& surface, std::size_t limit_per_kind, bool before_cdt) {
   if (surface.num_triangles() >= UINT32_MAX) throw Error(surface.file + ": more than 2^32 - 1 triangles");
-  return Inspector(surface, limit_per_kind).run();
+  return Inspector(surface, limit_per_kind, before_cdt).run();
 }
 
 }  // namespace sweepcdt::io

@@ -161,7 +161,7 @@ JobResult run_job(const JobInput& in) {
     surface = io::weld(soup);
     io::SnapReport snapped;
     if (snap > 0) surface = io::snap_coordinates(surface, snap, snapped);
-    const io::SurfaceReport report = io::inspect(surface, SIZE_MAX);
+    const io::SurfaceReport report = io::inspect(surface, SIZE_MAX, /*before_cdt=*/true);
     if (!report.valid()) {
       describe_surface_problems(in.name, surface, report, r);
       return r;

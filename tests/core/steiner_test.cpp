@@ -14,6 +14,8 @@
 #include <gmpxx.h>
 
 #include "cad_noise.h"
+#include "delaunay/delaunay.h"
+#include "delaunay/kept_tetrahedralization.h"
 #include "refined_check.h"
 #include "steiner/facet_groups.h"
 #include "steiner/refine.h"
@@ -429,6 +431,64 @@ TEST(Steiner, LaterRefinementsStartFromTheInputsTetrahedralization) {
   ASSERT_TRUE(again.delaunay && fresh.delaunay);
   EXPECT_EQ(again.delaunay->tets, fresh.delaunay->tets);
   EXPECT_EQ(again.delaunay->neighbors, fresh.delaunay->neighbors);
+}
+
+// An importer checks a surface with find_problems_before_cdt(): given a second thread, the Delaunay
+// tetrahedralization of its points is computed there and kept in the check's record, and cdt() takes
+// it (once) instead of computing it after the check. The problems and the record are those of
+// find_problems(); the tetrahedralization is the input's (every edge as built from scratch); cdt()
+// gives the same triangulation with it as without; a record that does not cover the PLC, a PLC with
+// problems, or one thread keeps none.
+TEST(Steiner, TheImportersTetrahedralizationIsTakenOnce) {
+  Plc<3> prism = fixtures::twisted_prism(0.5);  // needs Steiner points: refinement runs
+  for (double& x : prism.points) x = static_cast<float>(x);
+  const auto go_on = [](std::size_t) { return true; };
+  std::shared_ptr<const PlcCheck<3>> record;
+  EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 2).empty());
+  ASSERT_TRUE(record && record->covers(prism));
+  Plc<3> checked = prism;
+  checked.checked = record;
+  std::unique_ptr<detail::DelaunayEdges> kept = detail::take_kept_tetrahedralization(checked, go_on);
+  ASSERT_NE(kept, nullptr) << "two threads, a record, yet no tetrahedralization kept";
+  EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "taken twice";
+  std::vector<double> points = prism.points;
+  kept->rebind(points);
+  record.reset();
+  checked.checked.reset();  // the record's points are gone: the kept one reads `points`
+  std::set<std::pair<uint32_t, uint32_t>> edges;
+  for (const auto& t : detail::delaunay_simplices<3>(points))
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.insert(std::minmax(t[i], t[j]));
+  for (uint32_t a = 0; a < prism.num_points(); ++a)
+    for (uint32_t b = a + 1; b < prism.num_points(); ++b) EXPECT_EQ(kept->has_edge(a, b), edges.count({a, b}) > 0) << a << " " << b;
+
+  Options options = mesh_defaults();
+  options.threads = 2;
+  CdtStatistics with_stats, without_stats;
+  options.statistics = &without_stats;
+  const Triangulation<3> without = cdt(prism, options);
+  EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 2).empty());
+  checked.checked = record;
+  options.statistics = &with_stats;
+  const Triangulation<3> with = cdt(checked, options);
+  EXPECT_TRUE(with_stats.check_recorded);
+  EXPECT_GE(with_stats.steiner_attempts, 2u);
+  EXPECT_EQ(with.simplices, without.simplices);
+  EXPECT_EQ(with.points, without.points);
+  EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "cdt() did not take it";
+
+  Plc<3> moved = checked;  // the record no longer covers it
+  moved.points[0] = std::nextafter(moved.points[0], 2.0);
+  EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 2).empty());
+  moved.checked = record;
+  EXPECT_EQ(detail::take_kept_tetrahedralization(moved, go_on), nullptr);
+  Plc<3> bad = prism;
+  bad.simplices[1] = bad.simplices[0];
+  EXPECT_FALSE(find_problems_before_cdt(bad, 10, nullptr, &record, 2).empty());
+  EXPECT_FALSE(record);
+  EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 1).empty());
+  checked.checked = record;
+  EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "one thread: nothing beside the check";
 }
 
 // Float surfaces get Steiner points lazily (cdt.cpp): only where a cavity finds no CDT. A comb of

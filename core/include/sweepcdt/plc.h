@@ -70,6 +70,11 @@ struct Plc {
 // index ranges, repeated vertices, exterior/tags sizes, region seeds), which costs O(n + m).
 // The CAD parts of the README spend about a quarter of their time in the intersection tests: an
 // importer that checked the surface passes the record on so that cdt() does not test it again.
+namespace detail {
+struct KeptTetrahedralization;  // core/src/delaunay/kept_tetrahedralization.h
+struct PlcCheckAccess;
+}  // namespace detail
+
 template <int D>
 class PlcCheck {
  public:
@@ -77,12 +82,13 @@ class PlcCheck {
   bool covers(const Plc<D>& plc) const;
 
  private:
-  template <int E>
-  friend std::vector<PlcProblem> find_problems(const Plc<E>&, std::size_t, uint64_t*, std::shared_ptr<const PlcCheck<E>>*, unsigned);
-  PlcCheck(std::vector<double> points, std::vector<uint32_t> simplices)
-      : points_(std::move(points)), simplices_(std::move(simplices)) {}
+  friend struct detail::PlcCheckAccess;
+  PlcCheck(std::vector<double> points, std::vector<uint32_t> simplices, std::shared_ptr<detail::KeptTetrahedralization> kept)
+      : points_(std::move(points)), simplices_(std::move(simplices)), kept_(std::move(kept)) {}
   std::vector<double> points_;
   std::vector<uint32_t> simplices_;
+  // find_problems_before_cdt(): the Delaunay tetrahedralization of the points, for cdt() to take.
+  std::shared_ptr<detail::KeptTetrahedralization> kept_;
 };
 
 // Every problem of the PLC, up to `limit_per_kind` reported per kind (all are counted). Exact: no
@@ -94,6 +100,14 @@ template <int D>
 std::vector<PlcProblem> find_problems(const Plc<D>& plc, std::size_t limit_per_kind = 10,
                                       uint64_t* total = nullptr, std::shared_ptr<const PlcCheck<D>>* record = nullptr,
                                       unsigned threads = 0);
+
+// find_problems() of a 3D PLC about to be tetrahedralized (io's importers): given a second thread,
+// the Delaunay tetrahedralization of its points is computed there while the checks run on the
+// others, and the record keeps it for cdt(), which would otherwise compute it after the check (on a
+// small flat CAD part each is about a third of the run). The problems and the answer are those of
+// find_problems(); a record that cdt() never uses stops the computation when it is destroyed.
+std::vector<PlcProblem> find_problems_before_cdt(const Plc<3>& plc, std::size_t limit_per_kind = 10, uint64_t* total = nullptr,
+                                                 std::shared_ptr<const PlcCheck<3>>* record = nullptr, unsigned threads = 0);
 
 // Throws PlcError listing the problems if there are any.
 template <int D>

@@ -47,6 +47,9 @@ class InBackground {
   InBackground(const InBackground&) = delete;
   InBackground& operator=(const InBackground&) = delete;
 
+  // Tells the helper to stop (at its next report of progress); its result is then thrown away.
+  void stop() { stop_ = true; }
+
   // Waits for the helper: its result, or null when it found none. Meanwhile, and once at the end,
   // `report(inserted)` is called on this thread with the points inserted so far; when it returns
   // false the helper is stopped and get() returns null (the caller cancels).

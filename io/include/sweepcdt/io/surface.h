@@ -84,6 +84,9 @@ struct SurfaceReport {
 
 // Checks the surface; reports at most `limit_per_kind` problems of each kind (all are counted).
 // Exact self-intersection tests use core's find_problems (a box tree over the triangles).
-SurfaceReport inspect(const Surface& surface, std::size_t limit_per_kind = 10);
+// `before_cdt`: the surface is about to be meshed (plc_of_soup, import_plc): given a second thread,
+// the Delaunay tetrahedralization of its points is computed there beside the self-intersection tests
+// and kept in `checked` for cdt() (core's find_problems_before_cdt).
+SurfaceReport inspect(const Surface& surface, std::size_t limit_per_kind = 10, bool before_cdt = false);
 
 }  // namespace sweepcdt::io
