@@ -37,7 +37,7 @@ Soup soup_of_arrays(std::span<const double> points, std::span<const int64_t> tri
   return soup;
 }
 
-Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance, SnapReport* snapped, std::vector<uint32_t>* point_ids) {
+Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance, SnapReport* snapped, std::vector<uint32_t>* point_ids, bool for_cdt) {
   Surface surface = weld(soup);
   if (snap_tolerance > 0) {
     SnapReport report;
@@ -49,7 +49,7 @@ Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance, SnapReport* snapped,
     point_ids->assign(soup.num_points(), kNone);
     for (std::size_t c = 0; c < soup.triangles.size(); ++c) (*point_ids)[soup.triangles[c]] = surface.triangles[c];
   }
-  return to_plc(surface, inspect(surface, 10, true));  // about to be meshed
+  return to_plc(surface, inspect(surface, 10, for_cdt));
 }
 
 }  // namespace sweepcdt::io

@@ -22,8 +22,8 @@ Plc<3> to_plc(const Surface& surface, const SurfaceReport& report) {
   return plc;
 }
 
-Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance, SnapReport* snapped) {
-  return plc_of_soup(read_soup(file), snap_tolerance, snapped);
+Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance, SnapReport* snapped, bool for_cdt) {
+  return plc_of_soup(read_soup(file), snap_tolerance, snapped, nullptr, for_cdt);
 }
 
 }  // namespace sweepcdt::io

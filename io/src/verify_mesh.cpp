@@ -9,7 +9,7 @@ MeshVerification verify_mesh(const Plc<3>& input, const VolumeMesh& mesh, FacetM
 }
 
 MeshVerification verify_mesh_files(const std::filesystem::path& input, const std::filesystem::path& mesh, FacetMode facets, double snap) {
-  const Plc<3> surface = import_plc(input, snap);
+  const Plc<3> surface = import_plc(input, snap, nullptr, /*for_cdt=*/false);
   return verify_mesh(surface, read_volume_mesh(mesh), facets);
 }
 

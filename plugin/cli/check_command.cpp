@@ -46,7 +46,7 @@ int run_check(const std::vector<std::string>& words, std::ostream& out, std::ost
   io::VolumeMesh mesh;
   for (const std::string* file : {&input, &output}) {
     try {
-      if (file == &input) plc = io::import_plc(input, snap);
+      if (file == &input) plc = io::import_plc(input, snap, nullptr, /*for_cdt=*/false);
       else mesh = io::read_volume_mesh(output);
     } catch (...) {
       const Failure f = describe_current_exception(*file);

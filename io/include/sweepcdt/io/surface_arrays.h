@@ -22,8 +22,10 @@ Soup soup_of_arrays(std::span<const double> points, std::span<const int64_t> tri
 
 // weld → [snap_coordinates when snap_tolerance > 0] → inspect → to_plc, as import_plc() does after
 // reading. `point_ids` (if given) receives, per soup point, its id in the PLC (welding merges
-// equal points and drops unused ones), or kNone for a point no triangle uses.
+// equal points and drops unused ones), or kNone for a point no triangle uses. `for_cdt`: the PLC is
+// to be meshed, so its check also tetrahedralizes the points on a second thread for cdt()
+// (inspect(..., before_cdt)); false for a PLC only read (to verify a mesh against it).
 Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance = 0, SnapReport* snapped = nullptr,
-                   std::vector<uint32_t>* point_ids = nullptr);
+                   std::vector<uint32_t>* point_ids = nullptr, bool for_cdt = true);
 
 }  // namespace sweepcdt::io

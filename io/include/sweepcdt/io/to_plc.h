@@ -23,7 +23,7 @@ Plc<3> to_plc(const Surface& surface, const SurfaceReport& report);
 
 // read_soup → weld → inspect → to_plc in one call, for callers that want the PLC or an error.
 // With snap_tolerance > 0 the welded surface is snapped first (snap.h), and `snapped` (if given)
-// says what moved.
-Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance = 0, SnapReport* snapped = nullptr);
+// says what moved. `for_cdt`: as for plc_of_soup (surface_arrays.h).
+Plc<3> import_plc(const std::filesystem::path& file, double snap_tolerance = 0, SnapReport* snapped = nullptr, bool for_cdt = true);
 
 }  // namespace sweepcdt::io
