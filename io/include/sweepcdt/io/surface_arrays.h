@@ -24,7 +24,9 @@ Soup soup_of_arrays(std::span<const double> points, std::span<const int64_t> tri
 // reading. `point_ids` (if given) receives, per soup point, its id in the PLC (welding merges
 // equal points and drops unused ones), or kNone for a point no triangle uses. `for_cdt`: the PLC is
 // to be meshed, so its check also tetrahedralizes the points on a second thread for cdt()
-// (inspect(..., before_cdt)); false for a PLC only read (to verify a mesh against it).
+// (inspect(..., before_cdt)); the PLC's record holds that tetrahedralization (a few hundred bytes a
+// point) until cdt() takes it or the last copy of the PLC goes. False for a PLC only read (to verify
+// a mesh against it), or kept long before it is meshed.
 Plc<3> plc_of_soup(const Soup& soup, double snap_tolerance = 0, SnapReport* snapped = nullptr,
                    std::vector<uint32_t>* point_ids = nullptr, bool for_cdt = true);
 
