@@ -5,7 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <set>
+#include <vector>
 
+#include "delaunay/delaunay.h"
+#include "delaunay/kept_tetrahedralization.h"
+#include "parallel.h"
 #include "surface_builders.h"
 #include "sweepcdt/io/error.h"
 #include "sweepcdt/io/surface_arrays.h"
@@ -61,6 +67,34 @@ TEST(SurfaceArrays, SamePlcAsTheFile) {
   EXPECT_EQ(from_arrays.simplices, from_file.simplices);
   EXPECT_EQ(from_arrays.exterior, from_file.exterior);
   EXPECT_EQ(from_arrays.tags, from_file.tags);
+}
+
+// A PLC imported to be meshed (for_cdt, the default) carries the Delaunay tetrahedralization of its
+// points, computed beside the check on a second thread, for cdt() to take: here taken, it has the
+// edges of one built from scratch. Imported only to be read (for_cdt = false), or on a machine of
+// one hardware thread, it carries none.
+TEST(SurfaceArrays, ImportedForCdtCarriesItsTetrahedralization) {
+  const Soup soup = testing::cube_soup();
+  const auto go_on = [](std::size_t) { return true; };
+  Plc<3> for_cdt = plc_of_soup(soup);
+  std::unique_ptr<detail::DelaunayEdges> kept = detail::take_kept_tetrahedralization(for_cdt, go_on);
+  if (detail::thread_count(0) == 1) {
+    EXPECT_EQ(kept, nullptr) << "one hardware thread: nothing to compute it on";
+  } else {
+    ASSERT_NE(kept, nullptr);
+    std::vector<double> points = for_cdt.points;
+    kept->rebind(points);
+    for_cdt.checked.reset();
+    std::set<std::pair<uint32_t, uint32_t>> edges;
+    for (const auto& t : detail::delaunay_simplices<3>(points))
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) edges.insert(std::minmax(t[i], t[j]));
+    for (uint32_t a = 0; a < points.size() / 3; ++a)
+      for (uint32_t b = a + 1; b < points.size() / 3; ++b) EXPECT_EQ(kept->has_edge(a, b), edges.count({a, b}) > 0) << a << " " << b;
+  }
+  const Plc<3> read_only = plc_of_soup(soup, 0, nullptr, nullptr, /*for_cdt=*/false);
+  ASSERT_TRUE(read_only.checked && read_only.checked->covers(read_only)) << "the check's record is still kept";
+  EXPECT_EQ(detail::take_kept_tetrahedralization(read_only, go_on), nullptr);
 }
 
 // Welding merges equal points and drops unused ones; point_ids says where each soup point went.

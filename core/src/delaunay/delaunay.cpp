@@ -146,6 +146,7 @@ class Delaunay {
   explicit Delaunay(const std::vector<double>& points) : points_(&points) {}
   // The same points in another vector (its first num_inserted() points equal to these).
   void rebind(const std::vector<double>& points) { points_ = &points; }
+  const std::vector<double>& points() const { return *points_; }
 
   std::vector<Simplex> run(const std::vector<uint32_t>& order) {
     build(order);
@@ -599,8 +600,7 @@ void check_points(const std::vector<double>& points, std::size_t first = 0) {
 }  // namespace
 
 struct DelaunayEdges::Impl {
-  explicit Impl(const std::vector<double>& p) : points(&p), triangulation(p) {}
-  const std::vector<double>* points;
+  explicit Impl(const std::vector<double>& p) : triangulation(p) {}
   Delaunay<3> triangulation;
 };
 
@@ -612,13 +612,10 @@ DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const std::funct
 
 DelaunayEdges::~DelaunayEdges() = default;
 
-void DelaunayEdges::rebind(const std::vector<double>& points) {
-  impl_->points = &points;
-  impl_->triangulation.rebind(points);
-}
+void DelaunayEdges::rebind(const std::vector<double>& points) { impl_->triangulation.rebind(points); }
 
 void DelaunayEdges::insert_new_points() {
-  check_points<3>(*impl_->points, impl_->triangulation.num_inserted());
+  check_points<3>(impl_->triangulation.points(), impl_->triangulation.num_inserted());
   impl_->triangulation.insert_new_points();
 }
 
