@@ -261,6 +261,19 @@ std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Op
   return std::nullopt;
 }
 
+// The Delaunay tetrahedralization of plc's points that the importer's check computed meanwhile
+// (kept_tetrahedralization.h), once, or null; reports "Delaunay" progress while it waits for it.
+std::unique_ptr<detail::DelaunayEdges> take_imported_tetrahedralization(const Plc<3>& plc, const Options& options, CdtStatistics& stats) {
+  bool cancelled = false;
+  std::unique_ptr<detail::DelaunayEdges> kept = detail::take_kept_tetrahedralization(plc, [&](std::size_t inserted) {
+    cancelled = options.progress && !options.progress({"Delaunay", inserted, plc.num_points()});
+    return !cancelled;
+  });
+  if (cancelled) throw CancelledError();
+  stats.tetrahedralization_recorded = kept != nullptr;
+  return kept;
+}
+
 // One run on a checked PLC, perturbed by vertex id: (Steiner points or coplanar facets,) the
 // algorithm, neighbours, regions, validate(). `delaunay`: the Delaunay tetrahedralization of plc's
 // points, when cdt() computed it beside the check.
@@ -272,13 +285,7 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       detail::RefinedPlc refined;
       std::optional<Triangulation<3>> swept;  // found while refining
       if (options.steiner == SteinerMode::Auto) {
-        // The importer's check may have tetrahedralized the points meanwhile (kept_tetrahedralization.h).
-        bool cancelled = false;
-        std::unique_ptr<detail::DelaunayEdges> input_delaunay = detail::take_kept_tetrahedralization(plc, [&](std::size_t inserted) {
-          cancelled = options.progress && !options.progress({"Delaunay", inserted, plc.num_points()});
-          return !cancelled;
-        });
-        if (cancelled) throw CancelledError();
+        std::unique_ptr<detail::DelaunayEdges> input_delaunay = take_imported_tetrahedralization(plc, options, stats);
         if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
           swept = refine_lazily(plc, options, stats, clock, refined, std::move(input_delaunay));
         if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined, std::move(input_delaunay));
@@ -387,12 +394,13 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   // The cavity sweep's Delaunay triangulation beside a full check, given a second thread (with
   // Steiner points, in 3D, refinement computes its own as it goes; other dimensions have none).
   const bool refines = D == 3 && options.steiner == SteinerMode::Auto;
-  // An importer's tetrahedralization of the points serves refinement only (run()): stopped otherwise.
+  // An importer's tetrahedralization of the points (3D) serves refinement (run()) or, without it, the
+  // cavity sweep; the other algorithms have no use for it: stopped.
+  const bool sweeps_cavities = options.algorithm == Algorithm::CavitySweep && !refines;
   if constexpr (D == 3)
-    if (!refines) detail::drop_kept_tetrahedralization(plc);
-  std::optional<detail::DelaunayInBackground<D>> delaunay;
-  if (options.algorithm == Algorithm::CavitySweep && !refines && !stats.check_recorded && detail::thread_count(options.threads) > 1)
-    delaunay.emplace(plc.points);
+    if (!refines && !sweeps_cavities) detail::drop_kept_tetrahedralization(plc);
+  std::optional<detail::DelaunayInBackground<D>> delaunay;  // (a PLC whose record covers it has its check done)
+  if (sweeps_cavities && !stats.check_recorded && detail::thread_count(options.threads) > 1) delaunay.emplace(plc.points);
   // The triangulation takes a thread of its own and the check the others: a check on every
   // thread competes with it for its core, and it is the longer of the two (1.3M triangles on 2
   // cores: a check on two threads took 2.1 s, then 1 s more of waiting; on one thread 2.4 s, then
@@ -400,6 +408,13 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   check(plc, delaunay ? std::max(1u, detail::thread_count(options.threads) - 1) : options.threads);
   stats.seconds_check = clock.lap();
   const detail::DelaunayMesh* mesh = nullptr;
+  detail::DelaunayMesh imported;
+  if constexpr (D == 3)
+    if (sweeps_cavities)
+      if (const std::unique_ptr<detail::DelaunayEdges> kept = take_imported_tetrahedralization(plc, options, stats)) {
+        imported = kept->mesh();
+        mesh = &imported;
+      }
   if (delaunay) {
     bool cancelled = false;
     mesh = delaunay->get([&](std::size_t inserted) {

@@ -69,6 +69,7 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
     j["perturbation_order"] = r.cdt.perturbation_order;  // paper §6: 0 = vertex ids (sweepcdt/perturbation_order.h)
     j["validated"] = r.validated;
     j["check_recorded"] = r.cdt.check_recorded;  // cdt() reused the importer's intersection check
+    j["tetrahedralization_recorded"] = r.cdt.tetrahedralization_recorded;  // and the importer's tetrahedralization
   }
   // Runs made, one per perturbation order tried (paper §6); also when none gave a CDT.
   if (r.computed || r.code == kNoCdt) j["perturbation_orders"] = r.cdt.perturbation_orders;

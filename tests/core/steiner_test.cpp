@@ -472,6 +472,8 @@ TEST(Steiner, TheImportersTetrahedralizationIsTakenOnce) {
   options.statistics = &with_stats;
   const Triangulation<3> with = cdt(checked, options);
   EXPECT_TRUE(with_stats.check_recorded);
+  EXPECT_TRUE(with_stats.tetrahedralization_recorded);
+  EXPECT_FALSE(without_stats.tetrahedralization_recorded);
   EXPECT_GE(with_stats.steiner_attempts, 2u);
   EXPECT_EQ(with.simplices, without.simplices);
   EXPECT_EQ(with.points, without.points);
@@ -489,6 +491,46 @@ TEST(Steiner, TheImportersTetrahedralizationIsTakenOnce) {
   EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 1).empty());
   checked.checked = record;
   EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "one thread: nothing beside the check";
+}
+
+// Without Steiner refinement the cavity sweep starts from the importer's tetrahedralization too (the
+// converter's --steiner none, the library's own Options{}): the same triangulation and neighbours as
+// computing it again, and it is taken. The other algorithms do not use it: it is dropped.
+TEST(Steiner, WithoutRefinementTheCavitySweepTakesTheImportersTetrahedralization) {
+  Plc<3> comb = fixtures::extruded_columns({0, 1, 1.25, 3, 3.125, 5}, {3, 0.5, 3, 0.25, 4}, 2);  // a CDT as given
+  const auto go_on = [](std::size_t) { return true; };
+  for (const Algorithm algorithm : {Algorithm::CavitySweep, Algorithm::SweepSphere})
+    for (const FacetMode facets : {FacetMode::Coplanar, FacetMode::Triangles}) {
+      SCOPED_TRACE(to_string(algorithm) + std::string(facets == FacetMode::Coplanar ? ", coplanar facets" : ", triangles"));
+      Options options = mesh_defaults();
+      options.steiner = SteinerMode::None;
+      options.facets = facets;
+      options.algorithm = algorithm;
+      options.threads = 2;
+      CdtStatistics with_stats, without_stats;
+      options.statistics = &without_stats;
+      std::optional<Triangulation<3>> without;
+      try {
+        without = cdt(comb, options);
+      } catch (const NoCdtError&) {
+        ASSERT_EQ(facets, FacetMode::Triangles) << "the comb has a CDT with coplanar facets";
+      }
+      std::shared_ptr<const PlcCheck<3>> record;
+      ASSERT_TRUE(find_problems_before_cdt(comb, 10, nullptr, &record, 2).empty());
+      Plc<3> checked = comb;
+      checked.checked = record;
+      options.statistics = &with_stats;
+      if (without) {
+        const Triangulation<3> with = cdt(checked, options);
+        EXPECT_EQ(with.simplices, without->simplices);
+        EXPECT_EQ(with.neighbors, without->neighbors);
+      } else {
+        EXPECT_THROW(cdt(checked, options), NoCdtError);
+      }
+      EXPECT_TRUE(with_stats.check_recorded);
+      EXPECT_EQ(with_stats.tetrahedralization_recorded, algorithm == Algorithm::CavitySweep);
+      EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "neither taken nor dropped";
+    }
 }
 
 // Float surfaces get Steiner points lazily (cdt.cpp): only where a cavity finds no CDT. A comb of

@@ -82,6 +82,9 @@ struct CdtStatistics {
   // The PLC carried a record of an earlier check that covers it (Plc::checked, e.g. from an importer):
   // the geometric checks were not repeated, only the O(n + m) ones.
   bool check_recorded = false;
+  // D = 3: the Delaunay tetrahedralization of the points was the one the importer computed beside
+  // its check (sweepcdt::find_problems_before_cdt), not computed again.
+  bool tetrahedralization_recorded = false;
 };
 
 struct Progress {

@@ -1,6 +1,7 @@
 // The Delaunay tetrahedralization of a surface's points, computed on a helper thread while the
 // surface is checked (find_problems_before_cdt, plc.cpp: importers call it), and kept in the check's
-// record (PlcCheck) until cdt() takes it (cdt.cpp: Steiner refinement starts from it). On a small
+// record (PlcCheck) until cdt() takes it (cdt.cpp: Steiner refinement starts from it, and without
+// refinement the cavity sweep). On a small
 // flat CAD part the check and the tetrahedralization each took about a third of the run, one after
 // the other. The tetrahedralization is a pure function of the points (delaunay.h), so taking it
 // changes nothing but the time; a record never taken stops its helper when it is destroyed.
@@ -39,8 +40,8 @@ inline void drop(KeptTetrahedralization& kept) {
   kept.helper.stop();
 }
 
-// Stops the helper of the tetrahedralization plc's record keeps, if any: cdt() will not use it (no
-// Steiner refinement).
+// Stops the helper of the tetrahedralization plc's record keeps, if any: cdt() will not use it
+// (neither Steiner refinement nor the cavity sweep runs).
 inline void drop_kept_tetrahedralization(const Plc<3>& plc) {
   if (plc.checked && PlcCheckAccess::kept(*plc.checked)) drop(*PlcCheckAccess::kept(*plc.checked));
 }

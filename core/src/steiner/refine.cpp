@@ -81,10 +81,17 @@ class Refiner {
     tris_ = groups_.triangles;
     unflipped_.assign(tris_.size(), 1);
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
+    if (!adds_points()) return;  // nothing to look up: no segment will be split, no point made
     for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
-    if (options_.steiner == SteinerMode::Auto)
-      for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
+    for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
   }
+
+  // Whether refinement may add Steiner points: not without SteinerMode::Auto, nor when no segment
+  // is required (lazy refinement's first attempt, cdt.cpp): a segment that is not required is split
+  // only when it was Delaunay at first and a new point broke it (splits()), and points come only
+  // from splits. Then the first round need not look the segments up at all (a tenth of the time of
+  // a 327k-triangle float sphere, which needs no point).
+  bool adds_points() const { return options_.steiner == SteinerMode::Auto && !(required_ && required_->empty()); }
 
   const double* p(uint32_t v) const { return points_.data() + 3 * std::size_t{v}; }
 
