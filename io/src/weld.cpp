@@ -1,30 +1,49 @@
 // weld(): merge points with exactly equal coordinates — never by tolerance, which would move geometry.
-#include <algorithm>
-#include <numeric>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <vector>
 
 #include "sweepcdt/io/surface.h"
 
 namespace sweepcdt::io {
 
+namespace {
+
+// A point's coordinates as bits, -0 as +0 (== holds between them, so they weld).
+std::array<uint64_t, 3> coordinate_bits(const double* x) {
+  std::array<uint64_t, 3> bits;
+  for (int k = 0; k < 3; ++k) bits[k] = std::bit_cast<uint64_t>(x[k] + 0.0);
+  return bits;
+}
+
+uint64_t hash_of(const std::array<uint64_t, 3>& bits) {
+  uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (const uint64_t b : bits) h = (h ^ b) * 0xbf58476d1ce4e5b9ull, h ^= h >> 31;
+  return h;
+}
+
+}  // namespace
+
 Surface weld(const Soup& soup) {
   const std::size_t n = soup.num_points();
   auto p = [&](uint32_t i) { return soup.points.data() + 3 * std::size_t{i}; };
-  std::vector<uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  // Lexicographic by coordinates, ties by index so the representative is the smallest index.
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    const double *pa = p(a), *pb = p(b);
-    for (int k = 0; k < 3; ++k)
-      if (pa[k] != pb[k]) return pa[k] < pb[k];
-    return a < b;
-  });
+  // Each point's representative: the smallest index with the same coordinates. An open-addressing
+  // table over the coordinates' bits, filled in index order (a sort by coordinates took a tenth of
+  // a 327k-triangle STL's run: every triangle brings its own three points).
+  constexpr uint32_t kEmpty = UINT32_MAX;
+  std::size_t slots = 16;
+  while (slots < 2 * n) slots *= 2;
+  std::vector<uint32_t> table(slots, kEmpty);
   std::vector<uint32_t> representative(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const uint32_t a = order[i];
-    const bool same_as_previous = i > 0 && std::equal(p(a), p(a) + 3, p(order[i - 1]));
-    representative[a] = same_as_previous ? representative[order[i - 1]] : a;
+  for (uint32_t i = 0; i < n; ++i) {
+    const std::array<uint64_t, 3> bits = coordinate_bits(p(i));
+    std::size_t slot = hash_of(bits) & (slots - 1);
+    while (table[slot] != kEmpty && coordinate_bits(p(table[slot])) != bits) slot = (slot + 1) & (slots - 1);
+    if (table[slot] == kEmpty) table[slot] = i;
+    representative[i] = table[slot];
   }
-  order = {};  // release before the output grows
+  table = {};  // release before the output grows
 
   Surface surface;
   surface.file = soup.file;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "nesting.h"
@@ -30,6 +31,46 @@ TEST(Weld, MergesExactlyEqualCoordinatesOnly) {
   EXPECT_EQ(s.points_in_file, 6u);
   EXPECT_EQ(s.num_points(), 4u) << "(1,0,0) and (1,0,0) merge, -0 equals 0, but 1e-300 is not 0";
   EXPECT_EQ(s.triangles, (std::vector<uint32_t>{0, 1, 2, 1, 0, 3}));
+}
+
+// Many points, most of them repeats (-0 and +0 among them, and one-ulp neighbours that must stay
+// apart), against the definition: each point is represented by the first with equal coordinates,
+// and the surface numbers representatives by first use.
+TEST(Weld, EachPointBecomesTheFirstWithEqualCoordinates) {
+  std::mt19937 rng(7);
+  const std::vector<double> values = {0.0, -0.0, 1.0, std::nextafter(1.0, 2.0), -3.5, 1e-300, 0.1f};
+  Soup soup;
+  soup.file = "many";
+  for (int i = 0; i < 3000; ++i)
+    for (int k = 0; k < 3; ++k) soup.points.push_back(values[rng() % values.size()]);
+  for (int c = 0; c < 3 * 2000; ++c) soup.triangles.push_back(static_cast<uint32_t>(rng() % 3000));
+  std::vector<uint32_t> first(3000);
+  for (uint32_t i = 0; i < 3000; ++i) {
+    first[i] = i;
+    for (uint32_t j = 0; j < i; ++j)
+      if (soup.points[3 * j] == soup.points[3 * i] && soup.points[3 * j + 1] == soup.points[3 * i + 1] &&
+          soup.points[3 * j + 2] == soup.points[3 * i + 2]) {
+        first[i] = j;
+        break;
+      }
+  }
+  std::vector<uint32_t> id(3000, UINT32_MAX), triangles;
+  std::vector<double> points;
+  for (const uint32_t v : soup.triangles) {
+    const uint32_t r = first[v];
+    if (id[r] == UINT32_MAX) {
+      id[r] = static_cast<uint32_t>(points.size() / 3);
+      points.insert(points.end(), soup.points.begin() + 3 * r, soup.points.begin() + 3 * r + 3);
+    }
+    triangles.push_back(id[r]);
+  }
+  const Surface s = weld(soup);
+  EXPECT_EQ(s.triangles, triangles);
+  ASSERT_EQ(s.points.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    EXPECT_EQ(std::signbit(s.points[i]), std::signbit(points[i])) << "coordinate " << i << ": not the first point's";
+  EXPECT_EQ(s.points, points);
+  EXPECT_GE(s.num_points(), 200u);  // of 6^3 = 216 (-0 and +0 are one value of the pool's seven): most used
 }
 
 TEST(Weld, DropsUnusedPoints) {
