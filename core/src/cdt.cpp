@@ -145,6 +145,7 @@ void take_refined(detail::RefinedPlc& refined, const Options& options, CdtStatis
   stats.steiner_rounds = refined.rounds;
   stats.facets = refined.facets;
   stats.facet_flips = refined.flips;
+  stats.tetrahedralization_recorded = stats.tetrahedralization_recorded || refined.tetrahedralization_recorded;
   refined.plc.tags = refined.original;
   try {
     if (!refined.steiner_on.empty()) detail::check_refined(refined.plc, refined.off_input, options.threads);
@@ -262,16 +263,21 @@ std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Op
 }
 
 // The Delaunay tetrahedralization of plc's points that the importer's check computed meanwhile
-// (kept_tetrahedralization.h), once, or null; reports "Delaunay" progress while it waits for it.
-std::unique_ptr<detail::DelaunayEdges> take_imported_tetrahedralization(const Plc<3>& plc, const Options& options, CdtStatistics& stats) {
+// (kept_tetrahedralization.h), for the cavity sweep without refinement (refinement takes it itself):
+// once, in `storage`, else null. Reports "Delaunay" progress while it waits for it.
+const detail::DelaunayMesh* imported_tetrahedralization(const Plc<3>& plc, const Options& options, CdtStatistics& stats,
+                                                        detail::DelaunayMesh& storage) {
+  if (options.algorithm != Algorithm::CavitySweep) return nullptr;
   bool cancelled = false;
-  std::unique_ptr<detail::DelaunayEdges> kept = detail::take_kept_tetrahedralization(plc, [&](std::size_t inserted) {
+  const std::unique_ptr<detail::DelaunayEdges> kept = detail::take_kept_tetrahedralization(plc, [&](std::size_t inserted) {
     cancelled = options.progress && !options.progress({"Delaunay", inserted, plc.num_points()});
     return !cancelled;
   });
   if (cancelled) throw CancelledError();
-  stats.tetrahedralization_recorded = kept != nullptr;
-  return kept;
+  if (!kept) return nullptr;
+  stats.tetrahedralization_recorded = true;
+  storage = kept->mesh();
+  return &storage;
 }
 
 // One run on a checked PLC, perturbed by vertex id: (Steiner points or coplanar facets,) the
@@ -284,8 +290,9 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
     if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
       detail::RefinedPlc refined;
       std::optional<Triangulation<3>> swept;  // found while refining
+      detail::DelaunayMesh imported;
       if (options.steiner == SteinerMode::Auto) {
-        std::unique_ptr<detail::DelaunayEdges> input_delaunay = take_imported_tetrahedralization(plc, options, stats);
+        std::unique_ptr<detail::DelaunayEdges> input_delaunay;  // refinement takes the importer's, if any
         if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
           swept = refine_lazily(plc, options, stats, clock, refined, std::move(input_delaunay));
         if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined, std::move(input_delaunay));
@@ -293,6 +300,7 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
         ++stats.steiner_attempts;
         refined = detail::refine(plc, options);
         take_refined(refined, options, stats, clock);
+        if (!delaunay) delaunay = imported_tetrahedralization(plc, options, stats, imported);  // after the facets' CDTs
       }
       if (!swept) {
         // Without Steiner points the refined PLC has the input's points, and their tetrahedralization.
@@ -317,6 +325,9 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       return tri;
     }
   }
+  detail::DelaunayMesh imported;
+  if constexpr (D == 3)
+    if (!delaunay) delaunay = imported_tetrahedralization(plc, options, stats, imported);
   Triangulation<D> tri = triangulate(plc, options, stats, clock, delaunay);
   if (triangulated) *triangulated = plc;
   return tri;
@@ -397,6 +408,14 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   // An importer's tetrahedralization of the points (3D) serves refinement (run()) or, without it, the
   // cavity sweep; the other algorithms have no use for it: stopped.
   const bool sweeps_cavities = options.algorithm == Algorithm::CavitySweep && !refines;
+  // Whatever run() did not claim of it stops with the call (refinement or the cavity sweep claims
+  // it in the first run; the other algorithms not at all: stopped at once).
+  struct DropUnclaimed {
+    const Plc<D>& plc;
+    ~DropUnclaimed() {
+      if constexpr (D == 3) detail::drop_kept_tetrahedralization(plc);
+    }
+  } drop_unclaimed{plc};
   if constexpr (D == 3)
     if (!refines && !sweeps_cavities) detail::drop_kept_tetrahedralization(plc);
   std::optional<detail::DelaunayInBackground<D>> delaunay;  // (a PLC whose record covers it has its check done)
@@ -408,13 +427,6 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   check(plc, delaunay ? std::max(1u, detail::thread_count(options.threads) - 1) : options.threads);
   stats.seconds_check = clock.lap();
   const detail::DelaunayMesh* mesh = nullptr;
-  detail::DelaunayMesh imported;
-  if constexpr (D == 3)
-    if (sweeps_cavities)
-      if (const std::unique_ptr<detail::DelaunayEdges> kept = take_imported_tetrahedralization(plc, options, stats)) {
-        imported = kept->mesh();
-        mesh = &imported;
-      }
   if (delaunay) {
     bool cancelled = false;
     mesh = delaunay->get([&](std::size_t inserted) {

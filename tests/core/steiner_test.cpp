@@ -479,6 +479,16 @@ TEST(Steiner, TheImportersTetrahedralizationIsTakenOnce) {
   EXPECT_EQ(with.points, without.points);
   EXPECT_EQ(detail::take_kept_tetrahedralization(checked, go_on), nullptr) << "cdt() did not take it";
 
+  // Claimed, it is no longer dropped (another cdt() on a copy of the PLC, running at the same time,
+  // must not stop the one the first waits for).
+  EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 2).empty());
+  checked.checked = record;
+  const std::shared_ptr<detail::KeptTetrahedralization> claimed = detail::claim_kept_tetrahedralization(checked);
+  ASSERT_NE(claimed, nullptr);
+  EXPECT_EQ(detail::claim_kept_tetrahedralization(checked), nullptr) << "claimed twice";
+  detail::drop_kept_tetrahedralization(checked);
+  EXPECT_NE(detail::wait_for_claimed(*claimed, go_on), nullptr) << "dropped after it was claimed";
+
   Plc<3> moved = checked;  // the record no longer covers it
   moved.points[0] = std::nextafter(moved.points[0], 2.0);
   EXPECT_TRUE(find_problems_before_cdt(prism, 10, nullptr, &record, 2).empty());

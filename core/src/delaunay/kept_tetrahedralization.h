@@ -33,37 +33,51 @@ struct PlcCheckAccess {
   static const std::shared_ptr<KeptTetrahedralization>& kept(const PlcCheck<3>& check) { return check.kept_; }
 };
 
-// Stops the helper of a tetrahedralization nobody will take.
+// Stops the helper of a tetrahedralization nobody will take (one already claimed goes on).
 inline void drop(KeptTetrahedralization& kept) {
   std::lock_guard lock(kept.mutex);
+  if (kept.taken) return;
   kept.taken = true;
   kept.helper.stop();
 }
 
-// Stops the helper of the tetrahedralization plc's record keeps, if any: cdt() will not use it
-// (neither Steiner refinement nor the cavity sweep runs).
+// Stops the helper of the tetrahedralization plc's record keeps, if any and not claimed: cdt() will
+// not use it (neither Steiner refinement nor the cavity sweep runs, or the run is over).
 inline void drop_kept_tetrahedralization(const Plc<3>& plc) {
   if (plc.checked && PlcCheckAccess::kept(*plc.checked)) drop(*PlcCheckAccess::kept(*plc.checked));
 }
 
-// The kept tetrahedralization of plc's points, once (null after that, or when plc carries none, or
-// a record that does not cover it: then its helper is stopped, or when the helper found none):
-// waits for the helper meanwhile calling report(inserted) (false: stop it and return null, the
-// caller cancels). The result reads the record's copy of the points: rebind it
-// (DelaunayEdges::rebind) to the caller's own before the record can go.
-template <class Report>
-std::unique_ptr<DelaunayEdges> take_kept_tetrahedralization(const Plc<3>& plc, Report&& report) {
+// The kept tetrahedralization of plc's points, claimed once (null after that, or when plc carries
+// none, or a record that does not cover it: then its helper is stopped), without waiting for it, so
+// that the caller can do other work meanwhile (refinement groups the facets), then wait_for_claimed().
+inline std::shared_ptr<KeptTetrahedralization> claim_kept_tetrahedralization(const Plc<3>& plc) {
   if (!plc.checked || !PlcCheckAccess::kept(*plc.checked)) return nullptr;
-  KeptTetrahedralization& kept = *PlcCheckAccess::kept(*plc.checked);
+  const std::shared_ptr<KeptTetrahedralization>& kept = PlcCheckAccess::kept(*plc.checked);
   if (!plc.checked->covers(plc)) {
-    drop(kept);
+    drop(*kept);
     return nullptr;
   }
-  std::lock_guard lock(kept.mutex);
-  if (kept.taken) return nullptr;
-  kept.taken = true;
-  std::unique_ptr<DelaunayEdges>* made = kept.helper.get(report);
+  std::lock_guard lock(kept->mutex);
+  if (kept->taken) return nullptr;
+  kept->taken = true;
+  return kept;
+}
+
+// A claimed tetrahedralization: waits for the helper meanwhile calling report(inserted) (false: stop
+// it and return null, the caller cancels); null also when the helper found none. The result reads
+// the record's copy of the points: rebind it (DelaunayEdges::rebind) to the caller's own before the
+// record can go.
+template <class Report>
+std::unique_ptr<DelaunayEdges> wait_for_claimed(KeptTetrahedralization& claimed, Report&& report) {
+  std::unique_ptr<DelaunayEdges>* made = claimed.helper.get(report);
   return made ? std::move(*made) : nullptr;
+}
+
+// Both at once.
+template <class Report>
+std::unique_ptr<DelaunayEdges> take_kept_tetrahedralization(const Plc<3>& plc, Report&& report) {
+  const std::shared_ptr<KeptTetrahedralization> claimed = claim_kept_tetrahedralization(plc);
+  return claimed ? wait_for_claimed(*claimed, report) : nullptr;
 }
 
 }  // namespace sweepcdt::detail

@@ -15,6 +15,7 @@
 #include "../tuple_map.h"
 #include "../delaunay/delaunay.h"
 #include "../delaunay/in_background.h"
+#include "../delaunay/kept_tetrahedralization.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
 #include "spacing_grid.h"
@@ -46,12 +47,19 @@ class Refiner {
       first_delaunay_ = std::move(*input_delaunay_);
       first_delaunay_->rebind(points_);
     }
-    // The Delaunay triangulation needs only the points: given a second thread, it is computed there
-    // while the facets are grouped (1.3M triangles: 2.5 s beside 1.2 s).
-    if (options_.steiner == SteinerMode::Auto && !first_delaunay_ && thread_count(options_.threads) > 1)
+    // The Delaunay triangulation needs only the points: the importer may have computed it beside its
+    // check (kept_tetrahedralization.h), else, given a second thread, it is computed there; either
+    // way the facets are grouped meanwhile (1.3M triangles: 2.5 s beside 1.2 s).
+    if (options_.steiner == SteinerMode::Auto && !first_delaunay_) imported_ = claim_kept_tetrahedralization(input);
+    if (options_.steiner == SteinerMode::Auto && !first_delaunay_ && !imported_ && thread_count(options_.threads) > 1)
       helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
     set_up(input);  // when it throws, helper_ is stopped as it is destroyed
   }
+  ~Refiner() {
+    if (imported_) imported_->helper.stop();  // claimed and never waited for: refinement failed
+  }
+  Refiner(const Refiner&) = delete;
+  Refiner& operator=(const Refiner&) = delete;
 
   RefinedPlc run() {
     if (options_.steiner == SteinerMode::Auto)
@@ -139,6 +147,13 @@ class Refiner {
   // the same order, so the facets' flips start from the same fans: splitting once per round instead
   // tripled gearwheel's flips), but it neither scans every segment nor flips the facets.
   void split_until_delaunay() {
+    if (!adds_points()) {  // only the facets' 2D CDTs; the tetrahedralization waited for after them
+      pieces_.put_in_order();
+      flip_facets();
+      r_.delaunay = first_delaunay().mesh();
+      if (input_delaunay_) *input_delaunay_ = std::move(first_delaunay_);  // the input's, handed back
+      return;
+    }
     DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
       pieces_.put_in_order();        // the last round's fold splits
@@ -190,6 +205,12 @@ class Refiner {
       cancelled = options_.progress && !options_.progress({"Delaunay", inserted, r_.num_input_points});
       return !cancelled;
     };
+    if (imported_) {
+      first_delaunay_ = wait_for_claimed(*imported_, report);
+      if (first_delaunay_) first_delaunay_->rebind(points_), r_.tetrahedralization_recorded = true;
+      imported_.reset();
+      if (cancelled) throw CancelledError();
+    }
     if (helper_) {
       if (std::unique_ptr<DelaunayEdges>* made = helper_->get(report)) first_delaunay_ = std::move(*made);
       helper_.reset();
@@ -598,6 +619,7 @@ class Refiner {
   std::vector<double> points_;  // first: the helper thread reads it from the start
   std::unique_ptr<DelaunayEdges> first_delaunay_;
   std::unique_ptr<DelaunayEdges>* input_delaunay_;  // refine.h; may be null
+  std::shared_ptr<KeptTetrahedralization> imported_;  // the importer's, claimed, until first_delaunay() waits for it
   std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
   FacetGroups groups_;
   RefinedPlc r_;

@@ -82,6 +82,9 @@ struct RefinedPlc {
   // The Delaunay tetrahedralization of plc.points that refinement kept (SteinerMode::Auto), which
   // the cavity sweep starts from (cavity/cavity_cdt.h) instead of computing it again.
   std::optional<DelaunayMesh> delaunay;
+  // Refinement started from the tetrahedralization the importer computed beside its check
+  // (kept_tetrahedralization.h: claimed when refinement starts, waited for once it is needed).
+  bool tetrahedralization_recorded = false;
 };
 
 // Input segments (edge_key of their ends) whose pieces must be Delaunay; the others are left as they
@@ -98,7 +101,9 @@ enum class Folds { MadeDelaunay, LeftAsTheyAre };
 // `input_delaunay`: when it holds a triangulation, the Delaunay tetrahedralization of input.points
 // that an earlier call handed back, refinement starts from it instead of computing it again; when
 // refinement adds no Steiner point, the tetrahedralization is handed back there (lazy refinement's
-// attempts, cdt.cpp: the first, with nothing required, adds none). The result is the same either way.
+// attempts, cdt.cpp: the first, with nothing required, adds none). Else refinement takes the one
+// the importer kept in input's check record, if any and not taken yet. The result is the same
+// either way.
 RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required = nullptr,
                   Folds folds = Folds::MadeDelaunay, std::unique_ptr<DelaunayEdges>* input_delaunay = nullptr);
 
