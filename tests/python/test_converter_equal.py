@@ -2,6 +2,7 @@
 # read back with meshio (independent of sweepcdt's readers) against sweepcdt.tetrahedralize on the
 # surface read by sweepcdt.read_surface. The .vtu holds coordinates exactly and numbers regions and
 # boundary tags from 1 (io/src/volume_mesh_formats.h), so region/tag = module's + 1.
+import os
 import subprocess
 
 import meshio
@@ -72,3 +73,6 @@ def test_mesh_file_writes_what_the_converter_writes(shared_data, converter, tmp_
     subprocess.run([converter, "mesh", surface, "-o", tmp_path / "b.msh", "--format", "msh22", "--quiet"], check=True)
     assert (tmp_path / "a.msh").read_bytes() == (tmp_path / "b.msh").read_bytes()
     assert mesh.stats["regions"] == 2
+    # The import's intersection check and, given a second core, its tetrahedralization were reused.
+    assert mesh.stats["check_recorded"]
+    assert mesh.stats["tetrahedralization_recorded"] == ((os.cpu_count() or 1) > 1)

@@ -106,6 +106,8 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   s["snapped_points"] = run.snap.points_moved;
   s["snap_largest_move"] = run.snap.largest_move;
   s["checked"] = run.validated;
+  s["check_recorded"] = run.cdt.check_recorded;                            // the import's intersection check reused
+  s["tetrahedralization_recorded"] = run.cdt.tetrahedralization_recorded;  // and its tetrahedralization
   s["seconds_surface"] = run.seconds_surface;
   s["seconds_check"] = run.cdt.seconds_check;
   s["seconds_setup"] = run.cdt.seconds_setup;
