@@ -418,7 +418,8 @@ Triangulation<D> cdt(const Plc<D>& plc, const Options& options, Plc<D>* triangul
   } drop_unclaimed{plc};
   if constexpr (D == 3)
     if (!refines && !sweeps_cavities) detail::drop_kept_tetrahedralization(plc);
-  std::optional<detail::DelaunayInBackground<D>> delaunay;  // (a PLC whose record covers it has its check done)
+  // (A PLC whose record covers it needs no full check: run() takes the importer's, if any.)
+  std::optional<detail::DelaunayInBackground<D>> delaunay;
   if (sweeps_cavities && !stats.check_recorded && detail::thread_count(options.threads) > 1) delaunay.emplace(plc.points);
   // The triangulation takes a thread of its own and the check the others: a check on every
   // thread competes with it for its core, and it is the longer of the two (1.3M triangles on 2

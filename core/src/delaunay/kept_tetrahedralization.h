@@ -1,10 +1,10 @@
 // The Delaunay tetrahedralization of a surface's points, computed on a helper thread while the
 // surface is checked (find_problems_before_cdt, plc.cpp: importers call it), and kept in the check's
-// record (PlcCheck) until cdt() takes it (cdt.cpp: Steiner refinement starts from it, and without
-// refinement the cavity sweep). On a small
-// flat CAD part the check and the tetrahedralization each took about a third of the run, one after
-// the other. The tetrahedralization is a pure function of the points (delaunay.h), so taking it
-// changes nothing but the time; a record never taken stops its helper when it is destroyed.
+// record (PlcCheck) until cdt() takes it (Steiner refinement starts from it, steiner/refine.cpp,
+// and without refinement the cavity sweep, cdt.cpp). On a small flat CAD part the check and the
+// tetrahedralization each took about a third of the run, one after the other. The
+// tetrahedralization is a pure function of the points (delaunay.h), so taking it changes nothing
+// but the time; a record never taken stops its helper when it is destroyed.
 #pragma once
 #include <memory>
 #include <mutex>
