@@ -7,6 +7,7 @@
 #pragma once
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -96,7 +97,11 @@ class WorkerPool {
     for (std::thread& t : helpers_) t.join();
   }
 
-  void run(std::size_t n, const std::function<void(std::size_t)>& job) {
+  // `while_waiting`, if given, is called on this thread every 50 ms or so while it waits for the
+  // helpers after its own share of the jobs; it must not throw either. (The cavity sweep reports
+  // progress there: progress is reported on the caller's thread only, and a caller that cancels
+  // must be heard while a helper sweeps a large cavity.)
+  void run(std::size_t n, const std::function<void(std::size_t)>& job, const std::function<void()>& while_waiting = {}) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &job;
@@ -111,7 +116,13 @@ class WorkerPool {
     // The jobs are a fraction of a millisecond: spin a little before sleeping on the condition.
     for (int spin = 0; spin < kSpins && busy_.load() != 0; ++spin) std::this_thread::yield();
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return busy_.load() == 0; });
+    const auto all_done = [&] { return busy_.load() == 0; };
+    if (!while_waiting) done_.wait(lock, all_done);
+    while (while_waiting && !done_.wait_for(lock, std::chrono::milliseconds(50), all_done)) {
+      lock.unlock();
+      while_waiting();
+      lock.lock();
+    }
     job_ = nullptr;
     predicates::add_perturbation_ties_on_this_thread(ties_);
   }

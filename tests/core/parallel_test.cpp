@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <random>
+#include <thread>
 
 #include "cad_noise.h"
 #include "cavity/disturbed.h"
@@ -46,6 +50,41 @@ Plc<3> copies_of(const Plc<3>& plc, int copies, double step) {
     all.exterior.insert(all.exterior.end(), plc.exterior.begin(), plc.exterior.end());
   }
   return all;
+}
+
+// WorkerPool::run calls `while_waiting` on the calling thread while it waits for a helper still at
+// work (the cavity sweep reports progress there, so that a cancel is heard while a helper sweeps a
+// large cavity). Deterministic: the caller's job holds it until the helper has started the other
+// job, and the helper's job ends only once the caller has been called back (the deadline only keeps
+// a failure from hanging).
+TEST(Parallel, WorkerPoolCallsTheCallerBackWhileItWaits) {
+  detail::WorkerPool pool(1);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> helper_started{false}, called_back{false}, gave_up{false};
+  std::atomic<int> called_elsewhere{0};
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  const auto wait_for = [&](const std::atomic<bool>& flag) {
+    while (!flag) {
+      if (std::chrono::steady_clock::now() > deadline) return void(gave_up = true);
+      std::this_thread::yield();
+    }
+  };
+  const std::function<void(std::size_t)> job = [&](std::size_t) {
+    if (std::this_thread::get_id() == caller) {
+      wait_for(helper_started);
+    } else {
+      helper_started = true;
+      wait_for(called_back);
+    }
+  };
+  pool.run(2, job, [&] {
+    if (std::this_thread::get_id() != caller) ++called_elsewhere;
+    called_back = true;
+  });
+  EXPECT_TRUE(helper_started);
+  EXPECT_TRUE(called_back);
+  EXPECT_FALSE(gave_up);
+  EXPECT_EQ(called_elsewhere, 0);
 }
 
 TEST(Parallel, PlcCheckFindsTheSameProblemsInTheSameOrder) {

@@ -141,7 +141,7 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
   };
   const unsigned threads = n > 1 ? std::min<unsigned>(thread_count(options.threads), static_cast<unsigned>(n)) : 1;
   if (threads > 1) {
-    WorkerPool(threads - 1).run(n, sweep);
+    WorkerPool(threads - 1).run(n, sweep, [&] { report(done.load()); });  // cancellable while a helper sweeps
   } else {
     for (std::size_t k = 0; k < n; ++k) sweep(k);
   }
