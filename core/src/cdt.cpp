@@ -286,11 +286,11 @@ const detail::DelaunayMesh* imported_tetrahedralization(const Plc<3>& plc, const
 template <int D>
 Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock, Plc<D>* triangulated,
                      const detail::DelaunayMesh* delaunay = nullptr) {
+  detail::DelaunayMesh imported;  // the importer's tetrahedralization, for the cavity sweep without refinement
   if constexpr (D == 3) {
     if (options.steiner == SteinerMode::Auto || options.facets == FacetMode::Coplanar) {
       detail::RefinedPlc refined;
       std::optional<Triangulation<3>> swept;  // found while refining
-      detail::DelaunayMesh imported;
       if (options.steiner == SteinerMode::Auto) {
         std::unique_ptr<detail::DelaunayEdges> input_delaunay;  // refinement takes the importer's, if any
         if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
@@ -325,7 +325,6 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       return tri;
     }
   }
-  detail::DelaunayMesh imported;
   if constexpr (D == 3)
     if (!delaunay) delaunay = imported_tetrahedralization(plc, options, stats, imported);
   Triangulation<D> tri = triangulate(plc, options, stats, clock, delaunay);
