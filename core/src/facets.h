@@ -32,24 +32,55 @@ FacetKey<D> facet_key(const uint32_t* simplex, int opposite) {
   return key;
 }
 
+// A simplex's vertex ids in ascending order, with the local index each has in the simplex: the key
+// of the facet opposite sorted position j is `ids` without entry j, so one sort per simplex gives
+// all D + 1 facet keys (instead of one sort per facet).
+template <int D>
+struct SortedSimplex {
+  std::array<uint32_t, D + 1> ids;
+  std::array<uint32_t, D + 1> local;
+
+  explicit SortedSimplex(const uint32_t* simplex) {
+    for (int i = 0; i <= D; ++i) {
+      int j = i;
+      for (; j > 0 && ids[j - 1] > simplex[i]; --j) ids[j] = ids[j - 1], local[j] = local[j - 1];
+      ids[j] = simplex[i], local[j] = static_cast<uint32_t>(i);
+    }
+  }
+  // The smallest id of the facet opposite sorted position j: the bucket it is sorted into.
+  uint32_t smallest_without(int j) const { return ids[j == 0 ? 1 : 0]; }
+  FacetEntry<D> facet_without(int j, uint32_t simplex) const {
+    FacetEntry<D> e;
+    for (int i = 0, k = 0; i <= D; ++i)
+      if (i != j) e.key[k++] = ids[i];
+    e.simplex = simplex;
+    e.local = local[j];
+    return e;
+  }
+};
+
 // Counting sort by the smallest vertex id, then small sorts within each bucket: O(s) for meshes.
 template <int D>
 std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri, unsigned threads = 1) {
   const std::size_t n = tri.num_points();
+  const uint32_t simplices = static_cast<uint32_t>(tri.num_simplices());
   std::vector<uint32_t> start(n + 1, 0);
-  for (uint32_t t = 0; t < tri.num_simplices(); ++t)
-    for (int i = 0; i <= D; ++i) ++start[facet_key<D>(tri.simplex(t), i)[0] + 1];
+  for (uint32_t t = 0; t < simplices; ++t) {
+    const SortedSimplex<D> s(tri.simplex(t));
+    start[s.ids[0] + 1] += D;  // every facet but the one without ids[0]
+    ++start[s.ids[1] + 1];
+  }
   for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
   std::vector<FacetEntry<D>> facets(start[n]);
   std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-  for (uint32_t t = 0; t < tri.num_simplices(); ++t)
-    for (int i = 0; i <= D; ++i) {
-      const FacetKey<D> key = facet_key<D>(tri.simplex(t), i);
-      facets[fill[key[0]]++] = {key, t, static_cast<uint32_t>(i)};
-    }
-  // Element by element (std::array's operators go through memcmp, a call per comparison here).
+  for (uint32_t t = 0; t < simplices; ++t) {
+    const SortedSimplex<D> s(tri.simplex(t));
+    for (int j = 0; j <= D; ++j) facets[fill[s.smallest_without(j)]++] = s.facet_without(j, t);
+  }
+  // Within a bucket the first ids are equal: compare the rest element by element (std::array's
+  // operators go through memcmp, a call per comparison here).
   const auto less = [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
-    for (int i = 0; i < D; ++i)
+    for (int i = 1; i < D; ++i)
       if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
     return a.simplex < b.simplex;
   };
