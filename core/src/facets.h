@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "facet_hash.h"
@@ -59,29 +62,80 @@ struct SortedSimplex {
   }
 };
 
-// Counting sort by the smallest vertex id, then small sorts within each bucket: O(s) for meshes.
+// An allocator that leaves new elements default-initialised: a facet list is written entry by entry
+// right after it is made, so zeroing it first (as std::vector does) would be a wasted pass.
+template <class T>
+struct DefaultInitAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInitAllocator<U>;
+  };
+  DefaultInitAllocator() = default;
+  template <class U>
+  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 template <int D>
-std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri, unsigned threads = 1) {
-  const std::size_t n = tri.num_points();
-  const uint32_t simplices = static_cast<uint32_t>(tri.num_simplices());
+using FacetList = std::vector<FacetEntry<D>, DefaultInitAllocator<FacetEntry<D>>>;
+
+// Counting sort by the smallest vertex id, then small sorts within each bucket: O(s) for meshes.
+// The counting and the scattering run in parts of the simplices (each part its own counts, so its
+// own slots in each bucket); the order within a bucket before its sort does not matter, as (key,
+// simplex) orders the entries totally.
+template <int D>
+FacetList<D> sorted_facets(const Triangulation<D>& tri, unsigned threads = 1) {
+  const std::size_t n = tri.num_points(), simplices = tri.num_simplices();
+  // At most 8 parts: each holds a count per point.
+  const unsigned scatter_threads = std::min(thread_count(threads), 8u);
+  std::vector<std::vector<uint32_t>> next(parts_for(simplices, scatter_threads));
+  for_each_part(simplices, scatter_threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+    std::vector<uint32_t>& count = next[part];
+    count.assign(n, 0);
+    for (std::size_t t = begin; t < end; ++t) {
+      const SortedSimplex<D> s(tri.simplex(static_cast<uint32_t>(t)));
+      count[s.ids[0]] += D;  // every facet but the one without ids[0]
+      ++count[s.ids[1]];
+    }
+  });
+  // Bucket v holds [start[v], start[v + 1]); within it each part's entries follow the last part's.
   std::vector<uint32_t> start(n + 1, 0);
-  for (uint32_t t = 0; t < simplices; ++t) {
-    const SortedSimplex<D> s(tri.simplex(t));
-    start[s.ids[0] + 1] += D;  // every facet but the one without ids[0]
-    ++start[s.ids[1] + 1];
+  for (std::size_t v = 0; v < n; ++v) {
+    uint32_t at = start[v];
+    for (std::vector<uint32_t>& count : next) {
+      const uint32_t c = count[v];
+      count[v] = at;
+      at += c;
+    }
+    start[v + 1] = at;
   }
-  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<FacetEntry<D>> facets(start[n]);
-  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-  for (uint32_t t = 0; t < simplices; ++t) {
-    const SortedSimplex<D> s(tri.simplex(t));
-    for (int j = 0; j <= D; ++j) facets[fill[s.smallest_without(j)]++] = s.facet_without(j, t);
-  }
+  FacetList<D> facets(start[n]);
+  for_each_part(simplices, scatter_threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+    std::vector<uint32_t>& fill = next[part];
+    for (std::size_t t = begin; t < end; ++t) {
+      const SortedSimplex<D> s(tri.simplex(static_cast<uint32_t>(t)));
+      for (int j = 0; j <= D; ++j) facets[fill[s.smallest_without(j)]++] = s.facet_without(j, static_cast<uint32_t>(t));
+    }
+  });
   // Within a bucket the first ids are equal: compare the rest element by element (std::array's
   // operators go through memcmp, a call per comparison here).
   const auto less = [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
-    for (int i = 1; i < D; ++i)
-      if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    if constexpr (D >= 3) {
+      const uint64_t x = uint64_t{a.key[1]} << 32 | a.key[2], y = uint64_t{b.key[1]} << 32 | b.key[2];
+      if (x != y) return x < y;
+      for (int i = 3; i < D; ++i)
+        if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    } else {
+      for (int i = 1; i < D; ++i)
+        if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    }
     return a.simplex < b.simplex;
   };
   // The buckets (one per smallest vertex) sort on their own: in parts of the vertices (parallel.h).
@@ -93,7 +147,7 @@ std::vector<FacetEntry<D>> sorted_facets(const Triangulation<D>& tri, unsigned t
 
 // Calls group(begin, end) for each run of equal keys in sorted facets.
 template <int D, class Group>
-void for_each_facet_group(const std::vector<FacetEntry<D>>& facets, Group&& group) {
+void for_each_facet_group(const FacetList<D>& facets, Group&& group) {
   for (std::size_t begin = 0; begin < facets.size();) {
     std::size_t end = begin + 1;
     while (end < facets.size() && same_tuple(facets[end].key, facets[begin].key)) ++end;

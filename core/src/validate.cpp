@@ -482,7 +482,7 @@ class Validator {
   const Triangulation<D>& tri_;
   const Plc<D>& plc_;
   ValidationReport report_;
-  std::vector<detail::FacetEntry<D>> facets_;
+  detail::FacetList<D> facets_;
   std::vector<Group> groups_;
   std::vector<uint8_t> positive_;  // per simplex: orientation() found it positively oriented
   unsigned threads_;
