@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 
 #include "sweepcdt/steiner_point.h"
@@ -64,6 +66,71 @@ TEST(SteinerPoint, EndsAndPointsBeyondThemAreNotSplitPoints) {
   EXPECT_FALSE(is_point_on_segment(a, b, off));
   const double mid[3] = {0.5, 1, 1.5};
   EXPECT_TRUE(is_point_on_segment(a, b, mid));
+}
+
+// The recogniser's searches alone (its first version, without the early answers it now gives when
+// x is beyond what the ends of t's range give): the two must agree everywhere, near the segment's
+// ends and beyond them too, where the brute-force scan above cannot reach (near t = 0 the doubles t
+// are far denser than the points they give).
+bool searched_from_a_to_b(const double* a, const double* b, const double* x) {
+  const auto bits = [](double t) {
+    uint64_t u;
+    std::memcpy(&u, &t, sizeof u);
+    return u;
+  };
+  const auto from_bits = [](uint64_t u) {
+    double t;
+    std::memcpy(&t, &u, sizeof t);
+    return t;
+  };
+  uint64_t first = 1, last = bits(1.0) - 1;
+  for (int k = 0; k < 3 && first <= last; ++k) {
+    const double d = b[k] - a[k];
+    const auto value = [&](uint64_t u) { return a[k] + from_bits(u) * d; };
+    if (d == 0) {
+      if (value(first) != x[k]) return false;
+      continue;
+    }
+    const auto first_where = [&](auto&& predicate) {
+      uint64_t lo = first, hi = last + 1;
+      while (lo < hi) {
+        const uint64_t mid = lo + (hi - lo) / 2;
+        if (predicate(mid)) hi = mid;
+        else lo = mid + 1;
+      }
+      return lo;
+    };
+    const uint64_t begin = first_where([&](uint64_t u) { return d > 0 ? value(u) >= x[k] : value(u) <= x[k]; });
+    const uint64_t end = first_where([&](uint64_t u) { return d > 0 ? value(u) > x[k] : value(u) < x[k]; });
+    if (begin >= end) return false;
+    first = begin, last = end - 1;
+  }
+  return first <= last;
+}
+
+TEST(SteinerPoint, EarlyAnswersAgreeWithTheSearchesNearTheEndsAndBeyond) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> coord(-100, 100), unit(0, 1);
+  int on = 0, off = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    double a[3], b[3], x[3];
+    for (int k = 0; k < 3; ++k) a[k] = coord(rng), b[k] = coord(rng);
+    if (trial % 5 == 0) b[trial % 3] = a[trial % 3];
+    // t near 0, near 1, in between, or beyond an end; then x nudged by up to 3 ulps in a coordinate.
+    const int regime = trial % 4;
+    const double t = regime == 0 ? std::ldexp(unit(rng), -40 - trial % 13)
+                     : regime == 1 ? 1 - std::ldexp(unit(rng), -40 - trial % 13)
+                     : regime == 2 ? unit(rng)
+                                   : (trial % 8 < 4 ? -1 : 1) * std::ldexp(unit(rng), -45) + (trial % 8 < 4 ? 0 : 1);
+    point_on_segment(a, b, t, x);
+    for (int nudge = trial % 4; nudge > 0; --nudge) x[trial % 3] = std::nextafter(x[trial % 3], trial % 2 ? INFINITY : -INFINITY);
+    const bool expected = !(x[0] == a[0] && x[1] == a[1] && x[2] == a[2]) && !(x[0] == b[0] && x[1] == b[1] && x[2] == b[2]) &&
+                          (searched_from_a_to_b(a, b, x) || searched_from_a_to_b(b, a, x));
+    ASSERT_EQ(is_point_on_segment(a, b, x), expected) << trial;
+    (expected ? on : off)++;
+  }
+  EXPECT_GT(on, 2000);
+  EXPECT_GT(off, 2000);
 }
 
 // The constructions of earlier versions are special cases, so their meshes still verify: the

@@ -1,6 +1,7 @@
 #include "sweepcdt/steiner_point.h"
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 
 namespace sweepcdt {
@@ -37,6 +38,8 @@ Range preimage(double a, double d, double x, Range within) {
     }
     return lo;
   };
+  // x beyond what the range's ends give: no t between does (the same answer as the searches, without them).
+  if (!reached(within.last) || passed(within.first)) return {};
   const uint64_t first = first_where(reached), end = first_where(passed);
   if (first >= end) return {};
   return {first, end - 1};
@@ -44,6 +47,12 @@ Range preimage(double a, double d, double x, Range within) {
 
 bool from_a_to_b(const double* a, const double* b, const double* x) {
   Range t{1, kOne - 1};  // t in (0, 1): the smallest positive double up to the largest below 1
+  // First whether each coordinate is within what t's range gives (a point off the segment mostly is
+  // not), then the searches.
+  for (int k = 0; k < 3; ++k) {
+    const double d = b[k] - a[k], lo = a[k] + from_bits(t.first) * d, hi = a[k] + from_bits(t.last) * d;
+    if (x[k] < std::min(lo, hi) || x[k] > std::max(lo, hi)) return false;
+  }
   for (int k = 0; k < 3 && t.first <= t.last; ++k) t = preimage(a[k], b[k] - a[k], x[k], t);
   return t.first <= t.last;
 }
