@@ -16,6 +16,7 @@
 #include "sweepcdt/io/verify_mesh.h"
 #include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/steiner_point.h"
+#include "sweepcdt/verify_cdt.h"
 #include "tamper_mesh.h"
 #include "test_shapes.h"
 
@@ -235,6 +236,25 @@ TEST(VerifyMesh, CoplanarFacetsAndTheOtherModesSuggestion) {
 
 // A Steiner point that no tetrahedron uses, on a facet's boundary edge or on an edge inside a facet
 // (the cube's face diagonals): the facet is not tiled.
+// verify_cdt trusts the input's facets not to cross (the pieces of a facet exactly on it are tested
+// only against pieces that may not be: verify_cdt.cpp) only after checking it: two tetrahedra that
+// pass through each other, given as the PLC and as the mesh (each its own tetrahedron, every
+// boundary triangle an input facet), are rejected for the input's crossing.
+TEST(VerifyMesh, AnInputWhoseFacetsCrossIsRejected) {
+  Plc<3> input;
+  input.points = {0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4, 1, 1, 1, 5, 1, 1, 1, 5, 1, 1, 1, 5};
+  fixtures::add_tetrahedron(input, {0, 1, 2, 3});
+  fixtures::add_tetrahedron(input, {4, 5, 6, 7});
+  const std::vector<uint32_t> tetrahedra = {0, 1, 2, 3, 4, 5, 6, 7};
+  for (FacetMode mode : {FacetMode::Coplanar, FacetMode::Triangles}) {
+    const MeshVerification v = verify_cdt(input, TetMeshView{input.points, tetrahedra, {}, {}, {}}, mode);
+    EXPECT_FALSE(v.ok());
+    // With every triangle a facet and no Steiner point the input itself is validated against (and
+    // validate() refuses the overlap); the refined surface's check stops the other mode before it.
+    if (mode == FacetMode::Coplanar) EXPECT_TRUE(says(v, "input surface: simplices")) << all(v);
+  }
+}
+
 TEST(VerifyMesh, PointsNoTetrahedronUsesAreRejected) {
   TempDir dir;
   const Plc<3> input = imported(dir, cube_soup(0, 1));

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "../box_tree.h"
+#include "../segment_interior.h"
 #include "split_of_two.h"
 #include "sweepcdt/predicates.h"
 #include "sweepcdt/steiner_point.h"
@@ -111,6 +112,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
   r.on_edge.resize(facets.edges.size());
   r.on_facet.resize(facets.num_facets());
   r.facets_of.resize(total);
+  r.off_facet.assign(facets.num_facets(), 0);
   std::vector<uint32_t> ridges;
   std::vector<Box<3>> ridge_boxes, facet_boxes;
   for (uint32_t e = 0; e < facets.edges.size(); ++e) {
@@ -135,6 +137,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     const double* ps = splits.p(s);
     const Box<3> at{{ps[0], ps[1], ps[2]}, {ps[0], ps[1], ps[2]}};
     auto& on = r.facets_of[s];
+    bool exactly_on_segment = false;
     ridge_tree.any_overlap(at, [&](uint32_t k) {
       auto& line = r.on_edge[ridges[k]];
       std::size_t i = 0;
@@ -146,6 +149,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
       }
       line.insert(line.begin() + static_cast<std::ptrdiff_t>(i) + 1, s);
       for (uint32_t j : facets.edges[ridges[k]].triangles) on.push_back(facets.facet_of[j]);
+      exactly_on_segment = strictly_inside_segment<3>(splits.p(line.front()), ps, splits.p(line.back()));
       return true;
     });
     if (on.empty())  // a fold point
@@ -160,7 +164,10 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
                                                         : "a facet's boundary edge, nor between two points of one facet"));
       continue;
     }
-    for (uint32_t f : on) r.on_facet[f].push_back(s);
+    for (uint32_t f : on) {
+      r.on_facet[f].push_back(s);
+      if (!exactly_on_segment) r.off_facet[f] = 1;
+    }
     const uint32_t* t = input.simplex(facets.first_triangle(on.front()));
     if (predicates::orient<3>({input.point(t[0]), input.point(t[1]), input.point(t[2]), ps}) == predicates::Sign::Zero) ++r.exactly_on;
   }

@@ -32,6 +32,10 @@ struct SurfacePoints {
   std::vector<std::vector<uint32_t>> on_facet;   // per facet: the points on it, ascending
   std::vector<std::vector<uint32_t>> facets_of;  // per mesh point: the facets it lies on, ascending
   std::size_t exactly_on = 0;                    // Steiner points exactly in the plane of their first facet
+  // Per facet: it holds a Steiner point that is not exactly on its ridge's segment, strictly inside
+  // it (rounded off it, or a fold point), so its pieces may differ from it by rounding
+  // (verify_cdt.cpp: only their pairs are tested for crossings, as refined_check.h does in cdt()).
+  std::vector<char> off_facet;
 };
 
 // `points`: the mesh's (n x 3), the input's first (step 1). A Steiner point that is not reproduced

@@ -36,6 +36,7 @@
 #include <map>
 
 #include "../ids_text.h"
+#include "../refined_check.h"
 #include "problems.h"
 #include "surface_facets.h"
 #include "surface_points.h"
@@ -115,8 +116,10 @@ void check_file_boundary(const TetMeshView& mesh, const std::map<Triangle, std::
 }
 
 // Steps 2 and 3 (the input points are checked): the boundary of the tetrahedra is the input's
-// surface, refined. Returns it as a PLC, each piece with its tetrahedron on the positive side.
-Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mode, MeshVerification& v) {
+// surface, refined. Returns it as a PLC, each piece with its tetrahedron on the positive side, and
+// in `off_input`, per piece, whether its facet holds a point off its input segment (surface_points.h).
+Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mode, MeshVerification& v,
+                      std::vector<char>* off_input = nullptr) {
   Problems problems(v);
   // 2. The facets, and the Steiner points on them.
   const SurfaceFacets facets = detail::group_surface_facets(input, mode);
@@ -140,6 +143,7 @@ Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mo
     refined.simplices.insert(refined.simplices.end(), boundary[i].begin(), boundary[i].end());
     refined.exterior.push_back(ExteriorSide::Negative);
     refined.tags.push_back(facets.first_triangle(facet_of[i]));
+    if (off_input) off_input->push_back(on.off_facet[facet_of[i]]);
   }
   check_file_boundary(mesh, pieces, input, facets, problems, v);
   return refined;
@@ -170,7 +174,8 @@ MeshVerification verify_in_mode(const Plc<3>& input, const TetMeshView& mesh, Fa
     }
   if (!v.ok()) return v;
 
-  Plc<3> refined = verify_surface(input, mesh, mode, v);
+  std::vector<char> off_input;
+  Plc<3> refined = verify_surface(input, mesh, mode, v, &off_input);
   if (!v.ok()) {
     // A mesh made with --facets coplanar fails as triangles here; say so when it would pass.
     if (mode == FacetMode::Triangles) {
@@ -190,8 +195,19 @@ MeshVerification verify_in_mode(const Plc<3>& input, const TetMeshView& mesh, Fa
   compute_neighbors(tri);
   const bool exact_input = v.steiner_points == 0 && mode == FacetMode::Triangles;
   if (!exact_input) {
-    // Pieces of different facets must not cross (find_problems is exact).
-    for (const auto& p : find_problems(refined, Problems::kShown)) problems.add("refined surface: " + p.message);
+    // Pieces of different facets must not cross. A facet whose points all lie exactly on it (its
+    // input vertices, Steiner points strictly inside its segments) is tiled by its pieces (step 3,
+    // exact in its plane), so they meet the others as the input's facets do: properly, when the
+    // input is a valid PLC (a record of its check says so; else it is checked here). Only the pairs
+    // with a piece of a facet holding a point off its segment are tested (refined_check.h, as in
+    // cdt()); the rest of the PLC check runs on every piece.
+    for (const auto& p : find_problems(input, Problems::kShown)) problems.add("input surface: " + p.message);
+    if (!v.ok()) return v;
+    try {
+      detail::check_refined(refined, off_input);
+    } catch (const PlcError& e) {
+      for (const auto& p : e.problems()) problems.add("refined surface: " + p.message);
+    }
     if (!v.ok()) return v;
   }
   const Plc<3>& plc = exact_input ? input : refined;
