@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace sweepcdt {
@@ -13,6 +14,13 @@ double from_bits(uint64_t u) {
   std::memcpy(&t, &u, sizeof t);
   return t;
 }
+uint64_t bits_of(double t) {
+  uint64_t u;
+  std::memcpy(&u, &t, sizeof u);
+  return u;
+}
+// How many doubles t on either side of the guess the searches try first.
+constexpr uint64_t kGuessWindow = 64;
 constexpr uint64_t kOne = 0x3FF0000000000000ull;  // the bit pattern of 1.0
 
 struct Range {
@@ -28,9 +36,17 @@ Range preimage(double a, double d, double x, Range within) {
   // "At or beyond x" in the direction the coordinate moves as t grows.
   const auto reached = [&](uint64_t u) { return d > 0 ? value(u) >= x : value(u) <= x; };
   const auto passed = [&](uint64_t u) { return d > 0 ? value(u) > x : value(u) < x; };
+  // Where the exact line meets x: a guess (floating point), whose neighbourhood narrows the searches
+  // only where its ends bracket the answer, so the answer is the same with or without it.
+  const double guess = std::clamp((x - a) / d, from_bits(within.first), from_bits(within.last));
+  const uint64_t g = std::isnan(guess) ? within.first : bits_of(guess);
+  const uint64_t near_lo = std::max(within.first, g > kGuessWindow ? g - kGuessWindow : 0);
+  const uint64_t near_hi = std::min(within.last, g + kGuessWindow);
   // The first u with reached(u), and the first with passed(u); both predicates are monotone in u.
   const auto first_where = [&](auto&& predicate) {
     uint64_t lo = within.first, hi = within.last + 1;  // answer in [lo, hi]; hi = none
+    if (!predicate(near_lo)) lo = near_lo + 1;
+    if (predicate(near_hi)) hi = std::min(hi, near_hi);
     while (lo < hi) {
       const uint64_t mid = lo + (hi - lo) / 2;
       if (predicate(mid)) hi = mid;
