@@ -161,6 +161,13 @@ std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems)
 template <int D>
 void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, ProblemList& problems, unsigned threads,
                          const std::vector<char>* suspect = nullptr) {
+  std::vector<char> used(plc.num_points(), 0);
+  for (uint32_t id : plc.simplices) used[id] = 1;
+  // Nothing to test (a refined PLC whose facets are all exactly the input's, every point on them):
+  // no spatial index either.
+  if (suspect && std::none_of(suspect->begin(), suspect->end(), [](char c) { return c != 0; }) &&
+      std::all_of(used.begin(), used.end(), [](char c) { return c != 0; }))
+    return;
   std::vector<detail::Box<D>> boxes(plc.num_simplices());
   for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(simplex_coords(plc, j).data(), D);
   const detail::BoxTree<D> tree(boxes);
@@ -182,8 +189,6 @@ void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, Pro
   for (ProblemList& part : found) problems.append(std::move(part));
 
   // Points that are vertices of no simplex must not lie on one either.
-  std::vector<char> used(plc.num_points(), 0);
-  for (uint32_t id : plc.simplices) used[id] = 1;
   for (uint32_t i = 0; i < plc.num_points(); ++i) {
     if (used[i]) continue;
     const double* p = plc.point(i);

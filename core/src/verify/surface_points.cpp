@@ -129,6 +129,7 @@ SurfacePoints locate_points(const Plc<3>& input, const SurfaceFacets& facets, st
     for (uint32_t v : on) r.facets_of[v].push_back(f);
     facet_boxes.push_back(box_of(points, on));
   }
+  if (total == n) return r;  // no Steiner point to place
   const BoxTree<3> ridge_tree(std::move(ridge_boxes)), facet_tree(std::move(facet_boxes));
   const Splits splits(points);
   FoldSearch folds(points);

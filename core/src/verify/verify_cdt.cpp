@@ -33,8 +33,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 
+#include "../facets.h"
 #include "../ids_text.h"
 #include "../refined_check.h"
 #include "problems.h"
@@ -63,29 +63,31 @@ bool same_rotation(const Triangle& a, const Triangle& b) {
 // The boundary facets of the tetrahedra (facets of exactly one), each oriented with its tetrahedron
 // on its positive side, in the order of their sorted ids. Over-shared facets are validate()'s to report.
 std::vector<Triangle> boundary_of(const TetMeshView& mesh) {
-  std::map<Triangle, std::pair<int, Triangle>> facets;  // sorted ids -> (count, oriented facet)
-  for (std::size_t t = 0; t < mesh.num_tetrahedra(); ++t) {
-    const uint32_t* q = mesh.tetrahedra.data() + 4 * t;
-    for (int i = 0; i < 4; ++i) {
-      Triangle f{q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]};
-      const auto p = [&](uint32_t v) { return mesh.points.data() + 3 * std::size_t{v}; };
-      if (predicates::orient<3>({p(f[0]), p(f[1]), p(f[2]), p(q[i])}) == predicates::Sign::Negative) std::swap(f[1], f[2]);
-      Triangle key = f;
-      std::sort(key.begin(), key.end());
-      auto& entry = facets[key];
-      if (entry.first++ == 0) entry.second = f;
-    }
-  }
+  Triangulation<3> tets;  // for the facet sort only (step 1 checked the ids)
+  tets.points.assign(mesh.points.begin(), mesh.points.end());
+  tets.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
+  const auto facets = detail::sorted_facets(tets);
   std::vector<Triangle> boundary;
-  for (const auto& [key, entry] : facets)
-    if (entry.first == 1) boundary.push_back(entry.second);
+  detail::for_each_facet_group<3>(facets, [&](std::size_t begin, std::size_t end) {
+    if (end - begin != 1) return;
+    const uint32_t* q = tets.simplex(facets[begin].simplex);
+    const uint32_t i = facets[begin].local;
+    Triangle f{q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]};
+    const auto p = [&](uint32_t v) { return mesh.points.data() + 3 * std::size_t{v}; };
+    if (predicates::orient<3>({p(f[0]), p(f[1]), p(f[2]), p(q[i])}) == predicates::Sign::Negative) std::swap(f[1], f[2]);
+    boundary.push_back(f);
+  });
   return boundary;
 }
 
 // What solvers read as the boundary — the file's boundary triangles and their tags — must be the
 // tetrahedra's boundary facets, counterclockwise seen from outside, each tagged with its face id.
-// `pieces`: sorted ids -> (boundary facet oriented with its tetrahedron positive, its input facet).
-void check_file_boundary(const TetMeshView& mesh, const std::map<Triangle, std::pair<Triangle, uint32_t>>& pieces,
+// The boundary facets of the tetrahedra by their sorted ids, ascending: (sorted ids, (the facet
+// oriented with its tetrahedron positive, its input facet)).
+using Pieces = std::vector<std::pair<Triangle, std::pair<Triangle, uint32_t>>>;
+
+// `pieces`: as above.
+void check_file_boundary(const TetMeshView& mesh, const Pieces& pieces,
                          const Plc<3>& input, const SurfaceFacets& facets, Problems& problems, MeshVerification& v) {
   v.file_boundary = mesh.num_boundary() > 0;
   if (!v.file_boundary) return;
@@ -98,9 +100,9 @@ void check_file_boundary(const TetMeshView& mesh, const std::map<Triangle, std::
     const Triangle g{mesh.boundary[3 * k], mesh.boundary[3 * k + 1], mesh.boundary[3 * k + 2]};
     Triangle key = g;
     std::sort(key.begin(), key.end());
-    const auto it = pieces.find(key);
+    const auto it = std::lower_bound(pieces.begin(), pieces.end(), key, [](const auto& piece, const Triangle& k) { return piece.first < k; });
     const std::string name = "the file's boundary triangle " + std::to_string(k) + " " + detail::ids_text(g.data(), 3);
-    if (it == pieces.end()) {
+    if (it == pieces.end() || it->first != key) {
       problems.add(name + " is not a boundary facet of the tetrahedra");
       continue;
     }
@@ -135,16 +137,18 @@ Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mo
   const std::vector<uint32_t> facet_of = detail::verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
   if (!v.ok()) return refined;
   refined.points.assign(mesh.points.begin(), mesh.points.end());
-  std::map<Triangle, std::pair<Triangle, uint32_t>> pieces;
+  Pieces pieces;
+  pieces.reserve(boundary.size());
   for (std::size_t i = 0; i < boundary.size(); ++i) {
     Triangle key = boundary[i];
     std::sort(key.begin(), key.end());
-    pieces.emplace(key, std::make_pair(boundary[i], facet_of[i]));
+    pieces.push_back({key, {boundary[i], facet_of[i]}});
     refined.simplices.insert(refined.simplices.end(), boundary[i].begin(), boundary[i].end());
     refined.exterior.push_back(ExteriorSide::Negative);
     refined.tags.push_back(facets.first_triangle(facet_of[i]));
     if (off_input) off_input->push_back(on.off_facet[facet_of[i]]);
   }
+  if (!std::is_sorted(pieces.begin(), pieces.end())) std::sort(pieces.begin(), pieces.end());  // boundary_of lists them so
   check_file_boundary(mesh, pieces, input, facets, problems, v);
   return refined;
 }
