@@ -1,7 +1,7 @@
 // The CAD parts of tests/data/cad (FreeCAD exports: steiner_vs_tetgen_test.cpp says what they are)
 // through the default command, as a FreeCAD user runs it, and `sweepcdt check` on every result: the
 // default meshes them all, and each mesh is exactly the CDT of its part. And parts of 3D prints as
-// OpenSCAD exports them (tests/data/scad/README.md).
+// OpenSCAD exports them (tests/data/scad/README.md), and surfaces like scans' (tests/data/scan).
 #include <algorithm>
 #include <cstdlib>
 
@@ -48,6 +48,26 @@ TEST(CliCad, OpenScadExportsMeshByDefaultAndCheckVerifiesThem) {
     const CliRun ok = run("check " + quoted(stl) + " " + quoted(output), dir);
     EXPECT_EQ(ok.exit_code, 0) << part << "\n" << ok.out;
   }
+}
+
+// Surfaces as scanners and voxel tools make them (tests/data/scan/make_scan_surfaces.py: marching
+// tetrahedra of metaballs and of a gyroid lattice, full of slivers; a bumpy organic shell), made
+// here, as float STL and as 6-decimal OBJ: every one meshes by default, and `check` verifies it.
+TEST(CliCad, ScanLikeSurfacesMeshByDefaultAndCheckVerifiesThem) {
+  TempDir dir;
+  const std::string make = "python3 " + quoted(fs::path(SWEEPCDT_TEST_DATA) / "scan" / "make_scan_surfaces.py") + " " + quoted(dir.path()) +
+                           " --grid 16 --level 4";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  int with_points = 0;
+  for (const char* name : {"blobs_16.stl", "blobs_16.obj", "gyroid_16.stl", "shell_4.obj"}) {
+    const fs::path surface = dir.path() / name, output = dir.path() / (std::string(name) + ".mesh");
+    const CliRun r = run(quoted(surface) + " -o " + quoted(output), dir);
+    ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.out;
+    with_points += !r.says(" 0 Steiner points");
+    const CliRun ok = run("check " + quoted(surface) + " " + quoted(output), dir);
+    EXPECT_EQ(ok.exit_code, 0) << name << "\n" << ok.out;
+  }
+  EXPECT_GE(with_points, 3) << "the slivers need Steiner points: nothing exercised";
 }
 
 }  // namespace
