@@ -10,7 +10,7 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more | --scad] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more | --scad | --scan] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj, *.ply and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
@@ -21,6 +21,8 @@ Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --mo
 
   --scad: instead, the OpenSCAD parts of tests/data/scad exported by `openscad -o PART.stl` (ASCII
            STL with 6 significant digits, as 3D-print models are shared: double coordinates)
+  --scan: instead, surfaces like scans' (tests/data/scan/make_scan_surfaces.py): marching-tetrahedra
+           isosurfaces (metaballs, a gyroid lattice; slivers) at grids 16 and 40, a bumpy shell
 
 With --before, only the default command is timed, of both builds in turn (before, after, before,
 after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
@@ -181,6 +183,7 @@ def main():
     ap.add_argument("--rotated", action="store_true", help="CAD parts turned by 23 degrees (ROTATED)")
     ap.add_argument("--more", action="store_true", help="more FreeCAD parts (bench/make_more_cad_parts.py)")
     ap.add_argument("--scad", action="store_true", help="OpenSCAD parts (tests/data/scad), exported by openscad")
+    ap.add_argument("--scan", action="store_true", help="scan-like surfaces (tests/data/scan/make_scan_surfaces.py)")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -215,6 +218,12 @@ def main():
             path = os.path.join(noisy_dir.name, os.path.basename(source).replace(".scad", ".stl"))
             subprocess.run(["openscad", "-o", path, source], check=True, capture_output=True)
             files.append(path)
+    if args.scan:
+        make = os.path.join(ROOT, "tests", "data", "scan", "make_scan_surfaces.py")
+        for grid, level in ((16, 4), (40, 6)):
+            subprocess.run(["/usr/bin/python3", make, noisy_dir.name, "--grid", str(grid), "--level", str(level)], check=True,
+                           capture_output=True)
+        files = sorted(glob.glob(os.path.join(noisy_dir.name, "*.stl")) + glob.glob(os.path.join(noisy_dir.name, "*.obj")))
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return
