@@ -30,14 +30,20 @@ bool scan_near(const double* a, const double* b, const double* x, double t0, int
   return false;
 }
 
+// A random segment in [-100, 100]^3; every fifth trial's has a coordinate that does not change along it.
+void random_segment(std::mt19937_64& rng, int trial, double* a, double* b) {
+  std::uniform_real_distribution<double> coord(-100, 100);
+  for (int k = 0; k < 3; ++k) a[k] = coord(rng), b[k] = coord(rng);
+  if (trial % 5 == 0) b[trial % 3] = a[trial % 3];
+}
+
 TEST(SteinerPoint, RecognisesEveryConstructionAndNothingOffTheSegment) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> coord(-100, 100), param(0.01, 0.99);
+  std::uniform_real_distribution<double> param(0.01, 0.99);
   int accepted_nudged = 0, rejected_nudged = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     double a[3], b[3], x[3];
-    for (int k = 0; k < 3; ++k) a[k] = coord(rng), b[k] = coord(rng);
-    if (trial % 5 == 0) b[trial % 3] = a[trial % 3];  // a coordinate that does not change along ab
+    random_segment(rng, trial, a, b);
     const double t = param(rng);
     point_on_segment(a, b, t, x);
     ASSERT_TRUE(is_point_on_segment(a, b, x)) << trial;
@@ -110,12 +116,11 @@ bool searched_from_a_to_b(const double* a, const double* b, const double* x) {
 
 TEST(SteinerPoint, EarlyAnswersAgreeWithTheSearchesNearTheEndsAndBeyond) {
   std::mt19937_64 rng(13);
-  std::uniform_real_distribution<double> coord(-100, 100), unit(0, 1);
+  std::uniform_real_distribution<double> unit(0, 1);
   int on = 0, off = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     double a[3], b[3], x[3];
-    for (int k = 0; k < 3; ++k) a[k] = coord(rng), b[k] = coord(rng);
-    if (trial % 5 == 0) b[trial % 3] = a[trial % 3];
+    random_segment(rng, trial, a, b);
     // t near 0, near 1, in between, or beyond an end; then x nudged by up to 3 ulps in a coordinate.
     const int regime = trial % 4;
     const double t = regime == 0 ? std::ldexp(unit(rng), -40 - trial % 13)
