@@ -124,8 +124,8 @@ FacetList<D> sorted_facets(const Triangulation<D>& tri, unsigned threads = 1) {
       for (int j = 0; j <= D; ++j) facets[fill[s.smallest_without(j)]++] = s.facet_without(j, static_cast<uint32_t>(t));
     }
   });
-  // Within a bucket the first ids are equal: compare the rest element by element (std::array's
-  // operators go through memcmp, a call per comparison here).
+  // Within a bucket the first ids are equal: compare the rest, the second and third as one 64-bit
+  // key, then element by element (std::array's operators go through memcmp, a call per comparison).
   const auto less = [](const FacetEntry<D>& a, const FacetEntry<D>& b) {
     if constexpr (D >= 3) {
       const uint64_t x = uint64_t{a.key[1]} << 32 | a.key[2], y = uint64_t{b.key[1]} << 32 | b.key[2];

@@ -80,13 +80,13 @@ std::vector<Triangle> boundary_of(const TetMeshView& mesh) {
   return boundary;
 }
 
-// What solvers read as the boundary — the file's boundary triangles and their tags — must be the
-// tetrahedra's boundary facets, counterclockwise seen from outside, each tagged with its face id.
 // The boundary facets of the tetrahedra by their sorted ids, ascending: (sorted ids, (the facet
 // oriented with its tetrahedron positive, its input facet)).
 using Pieces = std::vector<std::pair<Triangle, std::pair<Triangle, uint32_t>>>;
 
-// `pieces`: as above.
+// What solvers read as the boundary — the file's boundary triangles and their tags — must be the
+// tetrahedra's boundary facets (`pieces`), counterclockwise seen from outside, each tagged with its
+// face id.
 void check_file_boundary(const TetMeshView& mesh, const Pieces& pieces,
                          const Plc<3>& input, const SurfaceFacets& facets, Problems& problems, MeshVerification& v) {
   v.file_boundary = mesh.num_boundary() > 0;
