@@ -196,7 +196,7 @@ MeshVerification verify_in_mode(const Plc<3>& input, const TetMeshView& mesh, Fa
   tri.num_input_points = static_cast<uint32_t>(total);
   tri.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
   if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions.assign(mesh.regions.begin(), mesh.regions.end());
-  compute_neighbors(tri);
+  // No neighbours: a file has none to check, and validate() pairs the facets itself.
   const bool exact_input = v.steiner_points == 0 && mode == FacetMode::Triangles;
   if (!exact_input) {
     // Pieces of different facets must not cross. A facet whose points all lie exactly on it (its
