@@ -1,8 +1,8 @@
 #include "sweepcdt/steiner_point.h"
 
-#include <cstdint>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace sweepcdt {
