@@ -62,10 +62,7 @@ bool same_rotation(const Triangle& a, const Triangle& b) {
 
 // The boundary facets of the tetrahedra (facets of exactly one), each oriented with its tetrahedron
 // on its positive side, in the order of their sorted ids. Over-shared facets are validate()'s to report.
-std::vector<Triangle> boundary_of(const TetMeshView& mesh) {
-  Triangulation<3> tets;  // for the facet sort only (step 1 checked the ids)
-  tets.points.assign(mesh.points.begin(), mesh.points.end());
-  tets.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
+std::vector<Triangle> boundary_of(const Triangulation<3>& tets) {
   const auto facets = detail::sorted_facets(tets);
   std::vector<Triangle> boundary;
   detail::for_each_facet_group<3>(facets, [&](std::size_t begin, std::size_t end) {
@@ -73,8 +70,8 @@ std::vector<Triangle> boundary_of(const TetMeshView& mesh) {
     const uint32_t* q = tets.simplex(facets[begin].simplex);
     const uint32_t i = facets[begin].local;
     Triangle f{q[(i + 1) % 4], q[(i + 2) % 4], q[(i + 3) % 4]};
-    const auto p = [&](uint32_t v) { return mesh.points.data() + 3 * std::size_t{v}; };
-    if (predicates::orient<3>({p(f[0]), p(f[1]), p(f[2]), p(q[i])}) == predicates::Sign::Negative) std::swap(f[1], f[2]);
+    if (predicates::orient<3>({tets.point(f[0]), tets.point(f[1]), tets.point(f[2]), tets.point(q[i])}) == predicates::Sign::Negative)
+      std::swap(f[1], f[2]);
     boundary.push_back(f);
   });
   return boundary;
@@ -120,8 +117,8 @@ void check_file_boundary(const TetMeshView& mesh, const Pieces& pieces,
 // Steps 2 and 3 (the input points are checked): the boundary of the tetrahedra is the input's
 // surface, refined. Returns it as a PLC, each piece with its tetrahedron on the positive side, and
 // in `off_input`, per piece, whether its facet holds a point off its input segment (surface_points.h).
-Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mode, MeshVerification& v,
-                      std::vector<char>* off_input = nullptr) {
+Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, const Triangulation<3>& tets, FacetMode mode,
+                      MeshVerification& v, std::vector<char>* off_input = nullptr) {
   Problems problems(v);
   // 2. The facets, and the Steiner points on them.
   const SurfaceFacets facets = detail::group_surface_facets(input, mode);
@@ -132,7 +129,7 @@ Plc<3> verify_surface(const Plc<3>& input, const TetMeshView& mesh, FacetMode mo
   if (!v.ok()) return refined;
 
   // 3. The boundary of the tetrahedra: pieces of the facets, tiling them.
-  const std::vector<Triangle> boundary = boundary_of(mesh);
+  const std::vector<Triangle> boundary = boundary_of(tets);
   v.boundary_triangles = boundary.size();
   const std::vector<uint32_t> facet_of = detail::verify_facet_patches(input, facets, on, mesh.points, boundary, problems);
   if (!v.ok()) return refined;
@@ -178,25 +175,27 @@ MeshVerification verify_in_mode(const Plc<3>& input, const TetMeshView& mesh, Fa
     }
   if (!v.ok()) return v;
 
+  // The tetrahedra as a triangulation (the ids are checked), for steps 3 and 4. No neighbours: a
+  // file has none to check, and validate() pairs the facets itself.
+  Triangulation<3> tri;
+  tri.points.assign(mesh.points.begin(), mesh.points.end());
+  tri.num_input_points = static_cast<uint32_t>(total);
+  tri.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
+  if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions.assign(mesh.regions.begin(), mesh.regions.end());
+
   std::vector<char> off_input;
-  Plc<3> refined = verify_surface(input, mesh, mode, v, &off_input);
+  Plc<3> refined = verify_surface(input, mesh, tri, mode, v, &off_input);
   if (!v.ok()) {
     // A mesh made with --facets coplanar fails as triangles here; say so when it would pass.
     if (mode == FacetMode::Triangles) {
       MeshVerification as_coplanar;
-      verify_surface(input, mesh, FacetMode::Coplanar, as_coplanar);
+      verify_surface(input, mesh, tri, FacetMode::Coplanar, as_coplanar);
       v.suggest_coplanar = as_coplanar.ok();
     }
     return v;
   }
 
   // 4. validate(): against the input itself when it is the surface as given.
-  Triangulation<3> tri;
-  tri.points.assign(mesh.points.begin(), mesh.points.end());
-  tri.num_input_points = static_cast<uint32_t>(total);
-  tri.simplices.assign(mesh.tetrahedra.begin(), mesh.tetrahedra.end());
-  if (mesh.regions.size() == mesh.num_tetrahedra()) tri.regions.assign(mesh.regions.begin(), mesh.regions.end());
-  // No neighbours: a file has none to check, and validate() pairs the facets itself.
   const bool exact_input = v.steiner_points == 0 && mode == FacetMode::Triangles;
   if (!exact_input) {
     // Pieces of different facets must not cross. A facet whose points all lie exactly on it (its
