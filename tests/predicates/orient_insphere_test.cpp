@@ -71,13 +71,6 @@ TYPED_TEST(OrientInsphere, IntegerGridDegenerate) {
   EXPECT_GT(c.insphere_zeros, c.cases / 100) << "too few degenerate insphere cases";
 }
 
-// Moves x by `ulps` units in the last place (towards +inf if positive).
-inline double nudge(double x, int ulps) {
-  for (; ulps > 0; --ulps) x = std::nextafter(x, INFINITY);
-  for (; ulps < 0; ++ulps) x = std::nextafter(x, -INFINITY);
-  return x;
-}
-
 // A double with at most 30 significant bits in [-1, 1], so small dyadic combinations are exact.
 inline double short_double(Rng& rng) { return std::ldexp(uniform_int(rng, -(1 << 29), 1 << 29), -29); }
 

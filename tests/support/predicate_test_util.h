@@ -122,6 +122,13 @@ inline double uniform(Rng& rng, double lo = -1.0, double hi = 1.0) {
 
 inline int uniform_int(Rng& rng, int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
 
+// Moves x by `ulps` units in the last place (towards +inf if positive).
+inline double nudge(double x, int ulps) {
+  for (; ulps > 0; --ulps) x = std::nextafter(x, INFINITY);
+  for (; ulps < 0; ++ulps) x = std::nextafter(x, -INFINITY);
+  return x;
+}
+
 template <int D>
 Point<D> random_point(Rng& rng, double lo = -1.0, double hi = 1.0) {
   Point<D> p;

@@ -4,7 +4,9 @@
 // those is an insphere determinant over an orient determinant), both the hot path of the sweeps.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 #include "approx.h"
 #include "sweepcdt/predicates/vertex.h"
@@ -32,6 +34,24 @@ inline double error_bound(int rounds, double permanent, double largest_differenc
   if (!(largest_difference <= kMaxFilteredDifference)) return INFINITY;  // NaN too
   return 2.0 * rounds * kUnitRoundoff * permanent + kUnderflowAbsoluteBound;
 }
+
+// The bound from the column sums of |A| instead of the permanent of |A| (its expansion over absolute
+// values): the permanent is at most the product of the column sums (expanding that product gives
+// every permutation's term, and more), and the computed entries, sums and product differ from the
+// exact ones by factors (1 + gamma_j), j a few dozen at most, which 1 + 2^-40 covers many times over.
+// Cheaper than the permanent (a few additions per entry, no second expansion) and looser, by up to
+// N^N / N! for like entries: the semi-static first stage of the 4D filters (filters4.h) and the
+// only one in D >= 5 (filters_dd.h). When the product underflows the determinant is far below
+// kUnderflowAbsoluteBound, which the bound then is, so no sign is certified wrongly.
+template <std::size_t N>
+inline double column_sums_bound(int rounds, const std::array<double, N>& column_sums, double largest_difference) {
+  double product = 1.0;
+  for (const double s : column_sums) product *= s;
+  return error_bound(rounds, product * (1.0 + 0x1p-40), largest_difference);
+}
+
+// Which bound a filter computes: the column sums' (cheap, looser; a first stage), or the permanent's.
+enum class Bound { ColumnSums, Permanent };
 
 // det [p_i - p_3]_{i<3}. Rounding counts: differences 1; 2x2 minors 1+1+1 = 3 then the subtraction
 // 4; 3x3 determinant: 4 + 1 + 1 = 6 per term, two sequential additions: 8.

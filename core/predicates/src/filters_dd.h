@@ -8,8 +8,9 @@
 // The permanent is at most the product of the column sums of |A| (expanding that product gives every
 // permutation's term, and more). The computed entries and sums differ from the exact ones by factors
 // (1 + gamma_j), j <= 2D + 2 (at most 12 roundings per entry and sum, 6 for the product), which the
-// factor 1 + 2^-40 covers many times over; and gamma_k <= 1.25 k u < 2 k u. k depends on the
-// expansion's shape only, so it is found once by running the expansion on Approx values.
+// factor 1 + 2^-40 covers many times over (column_sums_bound, filters3.h); and gamma_k <= 1.25 k u
+// < 2 k u. k depends on the expansion's shape only, so it is found once by running the expansion on
+// Approx values.
 // The column sums overestimate M by up to N^N / N! (65x for a 6x6 matrix of like entries): a filter
 // that fails more often near degeneracy, which only costs the generic filter and the exact stage.
 #pragma once
@@ -89,9 +90,7 @@ double table_determinant(const std::array<double, N * N>& a) {
 template <int N>
 Estimate matrix_estimate(const std::array<double, N * N>& m, const std::array<double, N>& column_sums, int rounds,
                          double largest_difference) {
-  double product = 1.0;
-  for (const double s : column_sums) product *= s;
-  return {table_determinant<N>(m), error_bound(rounds, product * (1.0 + 0x1p-40), largest_difference)};
+  return {table_determinant<N>(m), column_sums_bound(rounds, column_sums, largest_difference)};
 }
 
 // det [p_i - p_D]_{i<D}, as orient_det (arith.h).
