@@ -24,15 +24,16 @@ void assign_regions(Triangulation<D>& tri, const Plc<D>& plc, unsigned threads) 
   // Which interior facets are constraints: looked up in parts (a random access into the map each,
   // most of the work at a million simplices), once per facet, from its lower-numbered simplex.
   std::vector<uint8_t> constrained(tri.neighbors.size(), 0);
-  for_each_part(s, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-      for (int i = 0; i <= D; ++i) {
-        const uint32_t nb = tri.neighbors[(D + 1) * t + i];
-        if (nb == kNone || nb / (D + 1) < t) continue;
-        if (constraints.find(facet_key<D>(tri.simplex(static_cast<uint32_t>(t)), i)) != TupleMap<D>::kAbsent)
-          constrained[(D + 1) * t + i] = constrained[nb] = 1;
-      }
-  });
+  if (plc.num_simplices() > 0)  // (none: a convex hull's triangulation, every facet free)
+    for_each_part(s, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+        for (int i = 0; i <= D; ++i) {
+          const uint32_t nb = tri.neighbors[(D + 1) * t + i];
+          if (nb == kNone || nb / (D + 1) < t) continue;
+          if (constraints.find(facet_key<D>(tri.simplex(static_cast<uint32_t>(t)), i)) != TupleMap<D>::kAbsent)
+            constrained[(D + 1) * t + i] = constrained[nb] = 1;
+        }
+    });
   // Components across unconstrained facets (breadth-first).
   std::vector<int32_t> component(s, -1);
   int32_t components = 0;
