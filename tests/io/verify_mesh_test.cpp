@@ -234,8 +234,6 @@ TEST(VerifyMesh, CoplanarFacetsAndTheOtherModesSuggestion) {
   EXPECT_FALSE(untagged.file_tags);
 }
 
-// A Steiner point that no tetrahedron uses, on a facet's boundary edge or on an edge inside a facet
-// (the cube's face diagonals): the facet is not tiled.
 // verify_cdt trusts the input's facets not to cross (the pieces of a facet exactly on it are tested
 // only against pieces that may not be: verify_cdt.cpp) only after checking it: two tetrahedra that
 // pass through each other, given as the PLC and as the mesh (each its own tetrahedron, every
@@ -250,11 +248,13 @@ TEST(VerifyMesh, AnInputWhoseFacetsCrossIsRejected) {
     const MeshVerification v = verify_cdt(input, TetMeshView{input.points, tetrahedra, {}, {}, {}}, mode);
     EXPECT_FALSE(v.ok());
     // With every triangle a facet and no Steiner point the input itself is validated against (and
-    // validate() refuses the overlap); the refined surface's check stops the other mode before it.
+    // validate() refuses the overlap); the input's own check stops the other mode before it.
     if (mode == FacetMode::Coplanar) EXPECT_TRUE(says(v, "input surface: simplices")) << all(v);
   }
 }
 
+// A Steiner point that no tetrahedron uses, on a facet's boundary edge or on an edge inside a facet
+// (the cube's face diagonals): the facet is not tiled.
 TEST(VerifyMesh, PointsNoTetrahedronUsesAreRejected) {
   TempDir dir;
   const Plc<3> input = imported(dir, cube_soup(0, 1));
