@@ -316,6 +316,7 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
         stats.steiner_points_removed = deletions.removed;
         stats.steiner_deletions_tried = deletions.tried;
         stats.steiner_retries_skipped = deletions.skipped;
+        stats.steiner_refused_early = deletions.refused_early;
         stats.steiner_points = tri.steiner_on.size();
         stats.seconds_finish += clock.lap();
       }

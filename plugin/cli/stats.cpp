@@ -51,6 +51,7 @@ nlohmann::ordered_json file_json(const FileResult& r, double run_snap) {
     j["steiner_points_removed"] = r.cdt.steiner_points_removed;
     j["steiner_deletions_tried"] = r.cdt.steiner_deletions_tried;
     j["steiner_retries_skipped"] = r.cdt.steiner_retries_skipped;
+    j["steiner_refused_early"] = r.cdt.steiner_refused_early;
     j["steiner_rounds"] = r.cdt.steiner_rounds;
     j["steiner_attempts"] = r.cdt.steiner_attempts;
     j["facets"] = r.cdt.facets;

@@ -465,6 +465,65 @@ TEST(EditableCdt, SteinerPointsOffTheirSegmentGoWhenFacetsMayUnbend) {
   EXPECT_GT(corners_deleted, 10);
 }
 
+// While unbending (the deletion pass), a Steiner point on a segment whose merged pieces would not be
+// Delaunay among its star's vertices is refused before its cavity is built (blocked_segment.h). Each
+// such early refusal must be right: cdt() from scratch of the PLC the deletion would leave finds no
+// CDT either. Thin fins, with CAD noise (points rounded off their segments, facets bent: without the
+// test that a point's pieces are flat, this seed fails) and exact (binary fractions: points on their
+// segments; every fourth refusal checked), every Steiner point tried in turn, the others deleted
+// meanwhile, so the stars grow as the pass makes them grow.
+TEST(EditableCdt, EarlyRefusalsOfMergedSegmentsAgreeWithCdtFromScratch) {
+  for (const bool noise : {true, false}) {
+    // Without noise: noisy_fins' comb in binary fractions (points exactly on their segments).
+    std::vector<double> xs{0, 1}, tops{0.1875};
+    for (int fin = 0; fin < 3; ++fin) {
+      xs.push_back(xs.back() + 0.015625);
+      tops.push_back(1.0);
+      xs.push_back(xs.back() + 0.1875);
+      tops.push_back(0.1875 + 0.0078125 * fin);
+    }
+    const Plc<3> fins = noise ? sweepcdt::testing::noisy_fins(2) : fixtures::extruded_columns(xs, tops, 1.0);
+    Options options = mesh_defaults();
+    options.remove_steiner_points = false;
+    options.algorithm = Algorithm::SweepPlane;  // every segment refined (no lazy refinement)
+    if (!noise) options.facets = FacetMode::Triangles;  // every triangle's edges segments: more points
+    Plc<3> refined;
+    const Triangulation<3> tri = cdt(fins, options, &refined);
+    ASSERT_GT(tri.steiner_on.size(), 20u);
+    EditableCdt<3> mesh(refined, tri);
+    mesh.unbend_facets_at_steiner_points(1000);
+    int early = 0, checked = 0, deleted = 0, later = 0;
+    Options whole;
+    whole.algorithm = Algorithm::CavitySweep;  // decides exactly whether the PLC left has a CDT
+    for (int pass = 0; pass < 2; ++pass)
+      for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v) {
+        if (!mesh.has_vertex(v)) continue;
+        Plc<3> left;
+        try {
+          left = mesh.plc_without(v);
+        } catch (const VertexRemovalError&) {
+          continue;
+        }
+        try {
+          mesh.remove_vertex(v);
+          ++deleted;
+        } catch (const NoCdtError& e) {
+          if (std::string(e.what()).find("is not Delaunay (every sphere") == std::string::npos) {
+            ++later;
+            continue;
+          }
+          if (++early % (noise ? 1 : 4) != 0) continue;  // each check is a cdt() of the whole
+          ++checked;
+          EXPECT_THROW(cdt(left, whole), NoCdtError) << (noise ? "noisy" : "exact") << " fins, vertex " << v << ": " << e.what();
+        }
+      }
+    std::cout << "[ fins ] " << (noise ? "noisy" : "exact") << ": " << tri.steiner_on.size() << " Steiner points, " << deleted
+              << " deleted, " << early << " refused early (" << checked << " checked), " << later << " refused by the star sweep\n";
+    EXPECT_GT(early, 10);
+    EXPECT_GT(deleted, 10);
+  }
+}
+
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {
   const Plc<3> cube = fixtures::unit_cube_surface();
   EditableCdt<3> mesh(cube, cdt(cube));

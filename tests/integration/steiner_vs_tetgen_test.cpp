@@ -230,7 +230,9 @@ TEST(SteinerDeletion, JitteredScansKeepFewPointsAndPassCheck) {
 // refused one again when a neighbour goes — unless no vertex of its refusal's witness went, a
 // heuristic: so none of the points it keeps should go from its result. On pipe_tee_std every point
 // is made from its input edge's ends (float32 coordinates), so none is kept for another's sake (the
-// parent rule): each must be refused now, the retries the heuristic skipped included.
+// parent rule): each must be refused now, the retries the heuristic skipped included. Since session
+// 28 nearly every refusal there is found before the star CDT (blocked_segment.h), without a witness
+// (such a point is tried again whichever neighbour goes): 5252 of the 5272 refusals.
 TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   const Plc<3> plc = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "pipe_tee_std.stl");
   Options options = mesh_defaults();
@@ -242,7 +244,7 @@ TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   EXPECT_GE(stats.steiner_attempts, 2u);
   ASSERT_GT(stats.steiner_points_removed, 500u);
   ASSERT_GT(stats.steiner_points, 1000u);
-  EXPECT_GT(stats.steiner_retries_skipped, 100u);  // 172 of 6084 attempts in session 23
+  EXPECT_GT(stats.steiner_refused_early, 4000u);
   EXPECT_GT(stats.steiner_deletions_tried, stats.steiner_points + stats.steiner_points_removed);
   EditableCdt<3> mesh(refined, tri);
   std::vector<uint32_t> neighbours;

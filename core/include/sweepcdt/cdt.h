@@ -69,8 +69,10 @@ struct CdtStatistics {
   uint64_t steiner_points_removed = 0;  // added by refinement, then deleted again (remove_steiner_points)
   // The deletion pass: deletions worked out (each a star CDT), and retries of refused points skipped
   // because no vertex of their refusal's witness, nor of a constraint through them, went since
-  // (core/src/edit/remove_steiner.cpp).
-  uint64_t steiner_deletions_tried = 0, steiner_retries_skipped = 0;
+  // (core/src/edit/remove_steiner.cpp); of those tried, the ones refused before their star CDT: the
+  // segment they would leave is not Delaunay (core/src/edit/blocked_segment.h), or the point is
+  // rounded off its segment and its star too large to unbend.
+  uint64_t steiner_deletions_tried = 0, steiner_retries_skipped = 0, steiner_refused_early = 0;
   uint64_t facets = 0, facet_flips = 0;  // D = 3 with Steiner points or coplanar facets: facets, and the
                                          // edge flips that gave each its 2D CDT
   // Paper §6: runs made, one per perturbation order tried (1 unless the vertex-id order found no CDT

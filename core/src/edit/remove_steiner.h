@@ -29,6 +29,7 @@ inline constexpr std::size_t kLargestBentStar = 32;
 
 struct SteinerDeletions {
   uint64_t removed = 0, tried = 0, skipped = 0;  // points deleted, deletions tried, retries skipped
+  uint64_t refused_early = 0;  // of those tried: refused before the cavity was built (EditableCdt::refused_early)
 };
 
 // `tri` is the CDT of `plc` (the refined PLC: tri.num_input_points input points, then Steiner

@@ -88,6 +88,7 @@ py::dict result_dict(const SurfaceRun& run, const RunKeywords& k) {
   s["steiner_points_removed"] = run.cdt.steiner_points_removed;
   s["steiner_deletions_tried"] = run.cdt.steiner_deletions_tried;
   s["steiner_retries_skipped"] = run.cdt.steiner_retries_skipped;
+  s["steiner_refused_early"] = run.cdt.steiner_refused_early;
   s["tetrahedra"] = m.num_tetrahedra();
   s["boundary_triangles"] = m.num_boundary();
   s["regions"] = std::set<int32_t>(m.regions.begin(), m.regions.end()).size();
