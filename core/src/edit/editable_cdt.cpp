@@ -220,15 +220,21 @@ struct EditableCdt<D>::Impl {
   }
 
   // Whether the pieces of each input facet through v lie in one plane (exactly): its sheet is flat.
+  // Each piece's vertices are tested against the plane of its facet's first piece through v.
   bool flat_pieces_at(uint32_t v) const requires(D == 3) {
     const std::vector<uint32_t>& through = constraints_at[v];
-    for (std::size_t i = 0; i < through.size(); ++i)
+    for (std::size_t i = 0; i < through.size(); ++i) {
+      const uint32_t tag = tags[through[i]];
+      if (std::any_of(through.begin(), through.begin() + i, [&](uint32_t c) { return tags[c] == tag; })) continue;  // not the first
+      const Key& first = constraints[through[i]];
       for (std::size_t j = i + 1; j < through.size(); ++j) {
-        if (tags[through[i]] != tags[through[j]]) continue;
-        const Key& p = constraints[through[i]];
+        if (tags[through[j]] != tag) continue;
         for (const uint32_t w : constraints[through[j]])
-          if (predicates::orient<3>({point(p[0]), point(p[1]), point(p[2]), point(w)}) != predicates::Sign::Zero) return false;
+          if (std::find(first.begin(), first.end(), w) == first.end() &&
+              predicates::orient<3>({point(first[0]), point(first[1]), point(first[2]), point(w)}) != predicates::Sign::Zero)
+            return false;
       }
+    }
     return true;
   }
 
@@ -257,6 +263,7 @@ struct EditableCdt<D>::Impl {
         return star.size() > unbend_largest_star ? std::make_exception_ptr(VertexRemovalError(too_large_to_unbend(v, star.size()))) : nullptr;
       if (!flat_pieces_at(v)) return {};
       std::vector<uint32_t> ids;
+      ids.reserve(D * star.size());
       for (const uint32_t t : star)
         for (int i = 0; i <= D; ++i)
           if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b) ids.push_back(x);
