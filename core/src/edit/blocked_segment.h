@@ -2,11 +2,12 @@
 // lifting-map perturbation of paper §6) — the deletion pass's early refusal (remove_steiner.cpp).
 //
 // Deleting a Steiner point v from a segment merges its two pieces av and vb into ab, which the
-// cavity's CDT must then hold as an edge. Every vertex of v's star is visible from v, a point of ab,
-// so when every sphere through a and b holds one of them, ab is not constrained Delaunay and the
-// star sweep must find no CDT. That is why nearly every deletion is refused (session 27: 99% of the
-// refusals of the pass on 5 CAD parts and scans); this test says so in a few dozen insphere tests
-// instead of a star sweep.
+// cavity's CDT must then hold as an edge. Every vertex of v's star is visible from v, a point of ab
+// (when v lies exactly on ab and its facets' pieces are flat: EditableCdt checks both), so when
+// every sphere through a and b holds one of them, ab is not constrained Delaunay and the star sweep
+// must find no CDT. That is why nearly every refusal of the pass happens (94–100% of them on 5 CAD
+// parts and scans, measured before this test was built); this test says so in a few dozen insphere
+// tests instead of a star sweep.
 //
 // The spheres through a and b are a 2-parameter family (their centres fill the bisector plane of ab;
 // under the perturbation, the lifted hyperplanes through a+ and b+), and each other point c rules out
