@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 #include "delaunay/delaunay.h"
@@ -38,7 +39,7 @@ struct Tally {
   int delaunay = 0, blocked = 0, undecided = 0;
 };
 
-// Compares one point set with the oracle; the witness of a blocked answer must be a blocked subset.
+// Compares one point set's answer with the oracle (and a blocked answer's witness with the points given).
 void check(const std::vector<double>& points, Tally& tally, const std::string& what) {
   std::array<uint32_t, 3> witness;
   const SegmentInSpheres answer = answer_for(points, &witness);

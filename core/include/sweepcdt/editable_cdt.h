@@ -97,10 +97,10 @@ class EditableCdt {
   bool plan_is_current(const Removal& removal) const;
   // Commits so far that had to work their plan out again (for tests and measurements).
   uint64_t plans_redone() const;
-  // Deletions committed so far that were refused before their cavity was built, while unbending: a
-  // Steiner point whose two pieces of a segment would merge into one that is not Delaunay among the
-  // vertices of its star, or one rounded off its segment whose star is too large to unbend (for
-  // tests and measurements).
+  // Deletions so far (remove_vertex, commit_removal, try_commit_removal) refused before their cavity
+  // was built, while unbending: a Steiner point whose two pieces of a segment would merge into one
+  // that is not Delaunay among the vertices of its star, or one rounded off its segment whose star
+  // is too large to unbend (for tests and measurements).
   uint64_t refused_early() const;
 
   // Steiner points of cdt() (Options::steiner) that rounding put a few ulps off their segment or
