@@ -54,64 +54,89 @@ struct PairPermanents {
   }
 };
 
-// det [p_i - p_4]_{i<4}. Bound::ColumnSums first (orientation.cpp): on points in general position it
-// decides nearly every sign (all of 100000 random simplices), without the second expansion over
-// absolute values that the permanent's bound needs.
-template <Bound B = Bound::Permanent>
-inline Estimate orient4_estimate(const Coords<5>& p) {
-  double d[4][4], largest = 0.0;
-  std::array<double, 4> sums{};
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 4; ++k) {
-      d[i][k] = p[i][k] - p[4][k];
-      const double a = std::fabs(d[i][k]);
-      largest = std::max(largest, a);
-      sums[k] += a;
-    }
-  const double det = PairMinors<4>(d).det4({0, 1, 2, 3});
-  if constexpr (B == Bound::ColumnSums) return {det, column_sums_bound(PairMinors<4>::kRounds, sums, largest)};
-  return {det, error_bound(PairMinors<4>::kRounds, PairPermanents<4>(d).perm4({0, 1, 2, 3}), largest)};
+// The rows of differences rows_but(skip) leaves of five: the other four, in order.
+inline void rows_but(int skip, int (&r)[4]) {
+  for (int i = 0, n = 0; i < 5; ++i)
+    if (i != skip) r[n++] = i;
 }
+
+// det [p_i - p_4]_{i<4}, computed once, with two bounds: the column sums' (the semi-static first
+// stage, orientation.cpp: on points in general position it decides nearly every sign, all of 100000
+// random simplices) and, asked for only when that one cannot decide, the permanent's, which needs a
+// second expansion over absolute values.
+class Orient4Filter {
+ public:
+  explicit Orient4Filter(const Coords<5>& p) {
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 4; ++k) {
+        d_[i][k] = p[i][k] - p[4][k];
+        const double a = std::fabs(d_[i][k]);
+        largest_ = std::max(largest_, a);
+        sums_[k] += a;
+      }
+    det_ = PairMinors<4>(d_).det4({0, 1, 2, 3});
+  }
+  Estimate column_sums() const { return {det_, column_sums_bound(PairMinors<4>::kRounds, sums_, largest_)}; }
+  Estimate permanent() const { return {det_, error_bound(PairMinors<4>::kRounds, PairPermanents<4>(d_).perm4({0, 1, 2, 3}), largest_)}; }
+
+ private:
+  double d_[4][4], largest_ = 0.0, det_;
+  std::array<double, 4> sums_{};
+};
 
 // det [p_i - p_5, |p_i - p_5|^2]_{i<5}, expanded along the lift column: the sum of (-1)^i lift_i M_i,
 // M_i the 4x4 determinant of the difference rows but i (the 2x2 minors shared). Rounding counts:
 // lifts 3 (squares) + 3 (four terms in sequence) = 6; M_i 14; lift_i M_i 6 + 14 + 1 = 21; the five
-// terms in sequence: 25. Bound::ColumnSums first, as for orient4_estimate.
+// terms in sequence: 25. The same two bounds as Orient4Filter's.
+class Insphere4Filter {
+ public:
+  static constexpr int kRounds = 25;
+  explicit Insphere4Filter(const Coords<6>& p) {
+    for (int i = 0; i < 5; ++i) {
+      for (int k = 0; k < 4; ++k) {
+        d_[i][k] = p[i][k] - p[5][k];
+        const double a = std::fabs(d_[i][k]);
+        largest_ = std::max(largest_, a);
+        sums_[k] += a;
+      }
+      lift_[i] = ((d_[i][0] * d_[i][0] + d_[i][1] * d_[i][1]) + d_[i][2] * d_[i][2]) + d_[i][3] * d_[i][3];
+      sums_[4] += lift_[i];
+    }
+    const PairMinors<5> minors(d_);
+    for (int skip = 0; skip < 5; ++skip) {
+      int r[4];
+      rows_but(skip, r);
+      const double term = lift_[skip] * minors.det4(r);  // sign (-1)^(skip + 4) = (-1)^skip
+      det_ = skip == 0 ? term : (skip % 2 ? det_ - term : det_ + term);
+    }
+  }
+  Estimate column_sums() const { return {det_, column_sums_bound(kRounds, sums_, largest_)}; }
+  Estimate permanent() const {
+    const PairPermanents<5> permanents(d_);
+    double permanent = 0.0;
+    for (int skip = 0; skip < 5; ++skip) {
+      int r[4];
+      rows_but(skip, r);
+      permanent += lift_[skip] * permanents.perm4(r);
+    }
+    return {det_, error_bound(kRounds, permanent, largest_)};
+  }
+
+ private:
+  double d_[5][4], lift_[5], largest_ = 0.0, det_ = 0.0;
+  std::array<double, 5> sums_{};
+};
+
+// One bound of each, for callers that want only one (sweep_keys.cpp: the permanent's, as an enclosure).
+template <Bound B = Bound::Permanent>
+inline Estimate orient4_estimate(const Coords<5>& p) {
+  const Orient4Filter filter(p);
+  return B == Bound::ColumnSums ? filter.column_sums() : filter.permanent();
+}
 template <Bound B = Bound::Permanent>
 inline Estimate insphere4_estimate(const Coords<6>& p) {
-  double d[5][4], lift[5], largest = 0.0;
-  std::array<double, 5> sums{};
-  for (int i = 0; i < 5; ++i) {
-    for (int k = 0; k < 4; ++k) {
-      d[i][k] = p[i][k] - p[5][k];
-      const double a = std::fabs(d[i][k]);
-      largest = std::max(largest, a);
-      sums[k] += a;
-    }
-    lift[i] = ((d[i][0] * d[i][0] + d[i][1] * d[i][1]) + d[i][2] * d[i][2]) + d[i][3] * d[i][3];
-    sums[4] += lift[i];
-  }
-  const auto rows_but = [](int skip, int (&r)[4]) {
-    for (int i = 0, n = 0; i < 5; ++i)
-      if (i != skip) r[n++] = i;
-  };
-  const PairMinors<5> minors(d);
-  double det = 0.0;
-  for (int skip = 0; skip < 5; ++skip) {
-    int r[4];
-    rows_but(skip, r);
-    const double term = lift[skip] * minors.det4(r);  // sign (-1)^(skip + 4) = (-1)^skip
-    det = skip == 0 ? term : (skip % 2 ? det - term : det + term);
-  }
-  if constexpr (B == Bound::ColumnSums) return {det, column_sums_bound(25, sums, largest)};
-  const PairPermanents<5> permanents(d);
-  double permanent = 0.0;
-  for (int skip = 0; skip < 5; ++skip) {
-    int r[4];
-    rows_but(skip, r);
-    permanent += lift[skip] * permanents.perm4(r);
-  }
-  return {det, error_bound(25, permanent, largest)};
+  const Insphere4Filter filter(p);
+  return B == Bound::ColumnSums ? filter.column_sums() : filter.permanent();
 }
 
 // The hand-written filters by dimension, for code generic in D (sweep_keys.cpp).

@@ -210,20 +210,24 @@ template <int D>
 Sign orient(const Coords<D + 1>& p) {
   if constexpr (D == 2) return orient2(p);
   else if constexpr (D == 3) return certified_or(detail::orient3_estimate(p), [&] { return orient3_exact(p); });
-  else if constexpr (D == 4)
-    return certified_or(detail::orient4_estimate<detail::Bound::ColumnSums>(p), [&] {
-      return certified_or(detail::orient4_estimate(p), [&] { return exact_unless_repeated<4>(p, OrientFormula<4>{p}); });
+  else if constexpr (D == 4) {
+    const detail::Orient4Filter filter(p);  // the determinant once, the permanent only when needed
+    return certified_or(filter.column_sums(), [&] {
+      return certified_or(filter.permanent(), [&] { return exact_unless_repeated<4>(p, OrientFormula<4>{p}); });
     });
+  }
   else return certified_or(detail::orient_estimate_dd<D>(p), [&] { return generic_sign<D>(p, OrientFormula<D>{p}); });
 }
 
 template <int D>
 Sign insphere(const Coords<D + 2>& p) {
   if constexpr (D == 3) return certified_or(detail::insphere3_estimate(p), [&] { return insphere3_exact(p); });
-  else if constexpr (D == 4)
-    return certified_or(detail::insphere4_estimate<detail::Bound::ColumnSums>(p), [&] {
-      return certified_or(detail::insphere4_estimate(p), [&] { return exact_unless_repeated<4>(p, InsphereFormula<4>{p}); });
+  else if constexpr (D == 4) {
+    const detail::Insphere4Filter filter(p);
+    return certified_or(filter.column_sums(), [&] {
+      return certified_or(filter.permanent(), [&] { return exact_unless_repeated<4>(p, InsphereFormula<4>{p}); });
     });
+  }
   else return certified_or(detail::insphere_estimate_dd<D>(p), [&] { return generic_sign<D>(p, InsphereFormula<D>{p}); });
 }
 
