@@ -179,7 +179,7 @@ std::optional<Triangulation<3>> sweep_cavities(const detail::RefinedPlc& refined
 // encroaches on a segment from outside the domain, or across a face flat up to rounding, often leaves
 // the CDT intact. So the refinement first requires no segment at all, and the cavity sweep
 // (cavity/cavity_cdt.h) tries the PLC as it is; the input segments of the cavities that find no CDT
-// are required from then on, and the refinement runs again with them (splitting, too, any segment
+// are required from then on, and the refinement goes on with them (splitting, too, any segment
 // that its points make not Delaunay where it was: steiner/refine.cpp). A cavity without a CDT has a
 // segment that is not Delaunay (the theorem, applied to the cavity's PLC: every other ridge of it is
 // an edge of the Delaunay triangulation), or a fold that is not (folds are left as they are here:
@@ -193,10 +193,12 @@ std::optional<Triangulation<3>> sweep_cavities(const detail::RefinedPlc& refined
 // points made from pieces' ends left the deletion pass with more points than after refining every
 // segment (measured in session 20: more on 10 of 23 surfaces with double coordinates, up to 2.5x,
 // fewer on 9; on float surfaces fewer on 18 of 66 and 11 more on one, 10% less time in all).
-// The first attempt adds no point, so refine() hands back its Delaunay tetrahedralization of the
-// input points and the second starts from it (0.87x the time on filleted_box_fine, 0.95x on thingi,
-// paired, the same output). It is freed as soon as every cavity has a CDT: kept through the rest
-// (assembly, validation), it raised the peak memory of a 327k-triangle float sphere by 14%.
+// Each attempt continues the last one's refinement (detail::Refinement): the first adds no point, the
+// second starts from its Delaunay tetrahedralization of the input points, a third splits only the
+// pieces of the segments required since (thingi: 0.33 s of 1.44 s was refining again from scratch).
+// The refinement, with its tetrahedralization, is freed as soon as every cavity has a CDT: kept
+// through the rest (assembly, validation), the input's tetrahedralization alone raised the peak
+// memory of a 327k-triangle float sphere by 14%.
 constexpr int kLazyAttempts = 6;
 
 bool all_float(const std::vector<double>& points) {
@@ -204,19 +206,20 @@ bool all_float(const std::vector<double>& points) {
 }
 
 std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
-                                              detail::RefinedPlc& refined, std::unique_ptr<detail::DelaunayEdges> input_delaunay) {
+                                              detail::RefinedPlc& refined) {
   detail::RequiredSegments required;
-  for (int attempt = 0; attempt < kLazyAttempts; ++attempt) {
+  auto refinement = std::make_unique<detail::Refinement>(plc, options, required);
+  for (int attempt = 0; attempt < kLazyAttempts && refinement; ++attempt) {
     ++stats.steiner_attempts;
     try {
       refined = {};  // the last attempt's, freed before the next is made
-      refined = detail::refine(plc, options, &required, detail::Folds::LeftAsTheyAre, &input_delaunay);
+      refined = refinement->next();
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
       return std::nullopt;  // a limit, or rounding: refining every segment says so again, or succeeds
     }
     std::vector<std::array<uint32_t, 2>> failed_edges;
-    if (std::optional<Triangulation<3>> tri = sweep_cavities(refined, options, stats, clock, &failed_edges, [&] { input_delaunay.reset(); }))
+    if (std::optional<Triangulation<3>> tri = sweep_cavities(refined, options, stats, clock, &failed_edges, [&] { refinement.reset(); }))
       return tri;
     const std::size_t before = required.size();
     const uint32_t n = refined.num_input_points;
@@ -241,9 +244,9 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
 // made Delaunay after all: nullopt, with `refined` refined again, which the caller triangulates (as
 // it does when no fold was left, the theorem's premise holding already).
 std::optional<Triangulation<3>> refine_every_segment(const Plc<3>& plc, const Options& options, CdtStatistics& stats, Stopwatch& clock,
-                                                     detail::RefinedPlc& refined, std::unique_ptr<detail::DelaunayEdges> input_delaunay) {
+                                                     detail::RefinedPlc& refined) {
   ++stats.steiner_attempts;
-  refined = detail::refine(plc, options, nullptr, detail::Folds::LeftAsTheyAre, &input_delaunay);
+  refined = detail::refine(plc, options, nullptr, detail::Folds::LeftAsTheyAre);
   take_refined(refined, options, stats, clock);
   if (refined.folds_left == 0) return std::nullopt;
   if (options.algorithm == Algorithm::CavitySweep) {
@@ -292,10 +295,8 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       detail::RefinedPlc refined;
       std::optional<Triangulation<3>> swept;  // found while refining
       if (options.steiner == SteinerMode::Auto) {
-        std::unique_ptr<detail::DelaunayEdges> input_delaunay;  // refinement takes the importer's, if any
-        if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points))
-          swept = refine_lazily(plc, options, stats, clock, refined, std::move(input_delaunay));
-        if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined, std::move(input_delaunay));
+        if (options.algorithm == Algorithm::CavitySweep && all_float(plc.points)) swept = refine_lazily(plc, options, stats, clock, refined);
+        if (!swept) swept = refine_every_segment(plc, options, stats, clock, refined);
       } else {
         ++stats.steiner_attempts;
         refined = detail::refine(plc, options);

@@ -406,32 +406,96 @@ TEST(Steiner, RefinesOnlyTheRequiredSegments) {
   }
 }
 
-// Lazy refinement's attempts (cdt.cpp) refine the same input again and again; the first, with nothing
-// required, adds no point, so it hands the Delaunay tetrahedralization of the input points back, and
-// the next starts from it instead of computing it again. The result is the same refined PLC, point
-// for point and triangle for triangle, as refining from scratch; an attempt that adds points keeps
-// the tetrahedralization (it holds them now), so the one after computes its own.
-TEST(Steiner, LaterRefinementsStartFromTheInputsTetrahedralization) {
+// Lazy refinement's attempts (cdt.cpp) continue one refinement (detail::Refinement) with more input
+// segments required each time. Each attempt must leave every piece of every segment required so far
+// an edge of the Delaunay tetrahedralization of its points — checked against that tetrahedralization
+// computed from scratch, which the refinement's own kept one must also equal — and with every
+// segment required, the refined PLC must have a CDT (the theorem; the comb has float coordinates,
+// so its points lie on their segments and make no folds). The first attempt, with nothing
+// required, adds no point, and the next one, starting from it, refines as from scratch.
+namespace {
+std::set<std::array<uint32_t, 2>> delaunay_edges(const std::vector<double>& points) {
+  std::set<std::array<uint32_t, 2>> edges;
+  for (const auto& t : detail::delaunay_simplices<3>(points))
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.insert({std::min(t[i], t[j]), std::max(t[i], t[j])});
+  return edges;
+}
+// The edges of r's triangles that are pieces of a required input segment: each end is an end of the
+// segment or a Steiner point on it.
+std::vector<std::array<uint32_t, 2>> required_pieces(const detail::RefinedPlc& r, const detail::RequiredSegments& required) {
+  const uint32_t n = r.num_input_points;
+  const auto on = [&](uint32_t v, uint32_t u, uint32_t w) {
+    return v == u || v == w || (v >= n && r.on_segment[v - n] == std::array<uint32_t, 2>{u, w});
+  };
+  std::set<std::array<uint32_t, 2>> pieces;
+  for (std::size_t t = 0; t < r.plc.num_simplices(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = r.plc.simplex(t)[i], b = r.plc.simplex(t)[(i + 1) % 3];
+      for (const uint64_t key : required) {
+        const uint32_t u = static_cast<uint32_t>(key >> 32), w = static_cast<uint32_t>(key);
+        if (on(a, u, w) && on(b, u, w)) pieces.insert({std::min(a, b), std::max(a, b)});
+      }
+    }
+  return {pieces.begin(), pieces.end()};
+}
+}  // namespace
+
+TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPieceDelaunay) {
   const Plc<3> comb = fixtures::extruded_columns({0, 1, 1.2, 3, 3.1, 5}, {3, 0.5, 3, 0.2, 4}, 2);
   const Options options = mesh_defaults();
-  const detail::RequiredSegments none;
-  detail::RequiredSegments all;
+  detail::RequiredSegments required;
+  detail::Refinement refinement(comb, options, required);
+  const detail::RefinedPlc first = refinement.next();
+  EXPECT_TRUE(first.steiner_on.empty());
+  // Then one input segment that needs points, then every edge.
+  detail::RequiredSegments every;
   for (std::size_t t = 0; t < comb.num_simplices(); ++t)
-    for (int i = 0; i < 3; ++i) all.insert(detail::edge_key(comb.simplex(t)[i], comb.simplex(t)[(i + 1) % 3]));
-  std::unique_ptr<detail::DelaunayEdges> kept;
-  const detail::RefinedPlc first = detail::refine(comb, options, &none, detail::Folds::LeftAsTheyAre, &kept);
-  ASSERT_TRUE(first.steiner_on.empty());
-  ASSERT_NE(kept, nullptr) << "no point added, yet the tetrahedralization was not handed back";
-  const detail::RefinedPlc again = detail::refine(comb, options, &all, detail::Folds::LeftAsTheyAre, &kept);
-  const detail::RefinedPlc fresh = detail::refine(comb, options, &all, detail::Folds::LeftAsTheyAre);
-  ASSERT_GT(fresh.steiner_on.size(), 0u) << "the comb needs Steiner points: nothing exercised";
-  EXPECT_EQ(kept, nullptr) << "a tetrahedralization holding Steiner points was handed back";
-  EXPECT_EQ(again.plc.points, fresh.plc.points);
-  EXPECT_EQ(again.plc.simplices, fresh.plc.simplices);
-  EXPECT_EQ(again.on_segment, fresh.on_segment);
-  ASSERT_TRUE(again.delaunay && fresh.delaunay);
-  EXPECT_EQ(again.delaunay->tets, fresh.delaunay->tets);
-  EXPECT_EQ(again.delaunay->neighbors, fresh.delaunay->neighbors);
+    for (int i = 0; i < 3; ++i) every.insert(detail::edge_key(comb.simplex(t)[i], comb.simplex(t)[(i + 1) % 3]));
+  std::vector<detail::RequiredSegments> asked(2);
+  for (const auto& [u, v] : detail::refine(comb, options, &every, detail::Folds::LeftAsTheyAre).on_segment) {
+    const detail::RequiredSegments one{detail::edge_key(u, v)};
+    if (!detail::refine(comb, options, &one, detail::Folds::LeftAsTheyAre).steiner_on.empty()) asked[0] = one;
+  }
+  asked[1] = every;
+  required = asked[0];
+  const detail::RefinedPlc second = refinement.next();
+  required = asked[1];
+  const detail::RefinedPlc third = refinement.next();
+  ASSERT_GT(second.steiner_on.size(), 0u) << "the comb's segments need Steiner points: nothing exercised";
+  ASSERT_GT(third.steiner_on.size(), second.steiner_on.size()) << "the second attempt required every segment: nothing continued";
+  for (const auto& [r, segments] : {std::pair{&second, &asked[0]}, std::pair{&third, &asked[1]}}) {
+    const std::set<std::array<uint32_t, 2>> edges = delaunay_edges(r->plc.points);
+    const std::vector<std::array<uint32_t, 2>> pieces = required_pieces(*r, *segments);
+    ASSERT_FALSE(pieces.empty());
+    for (const auto& e : pieces) EXPECT_TRUE(edges.count(e)) << "piece " << e[0] << "-" << e[1] << " of a required segment is not Delaunay";
+    // The tetrahedralization handed to the cavity sweep is the Delaunay one of these points.
+    ASSERT_TRUE(r->delaunay);
+    std::set<std::array<uint32_t, 4>> kept, fresh;
+    for (std::size_t t = 0; t < r->delaunay->tets.size(); t += 4) {
+      std::array<uint32_t, 4> tet{r->delaunay->tets[t], r->delaunay->tets[t + 1], r->delaunay->tets[t + 2], r->delaunay->tets[t + 3]};
+      std::sort(tet.begin(), tet.end());
+      kept.insert(tet);
+    }
+    for (auto tet : detail::delaunay_simplices<3>(r->plc.points)) {
+      std::sort(tet.begin(), tet.end());
+      fresh.insert(tet);
+    }
+    EXPECT_EQ(kept, fresh);
+  }
+  Options exact;  // the refined PLC as it is
+  exact.algorithm = Algorithm::SweepSphere;
+  const Triangulation<3> tri = cdt(third.plc, exact);
+  EXPECT_TRUE(validate(tri, third.plc).ok());
+  // From nothing required to everything in one step is a refinement from scratch.
+  detail::RequiredSegments later;
+  detail::Refinement two_steps(comb, options, later);
+  EXPECT_TRUE(two_steps.next().steiner_on.empty());
+  later = asked[1];
+  const detail::RefinedPlc continued = two_steps.next();
+  const detail::RefinedPlc fresh = detail::refine(comb, options, &asked[1], detail::Folds::LeftAsTheyAre);
+  EXPECT_EQ(continued.plc.points, fresh.plc.points);
+  EXPECT_EQ(continued.on_segment, fresh.on_segment);
 }
 
 // An importer checks a surface with find_problems_before_cdt(): given a second thread, the Delaunay

@@ -39,19 +39,13 @@ std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds,
-          std::unique_ptr<DelaunayEdges>* input_delaunay)
-      : options_(options), required_(required), folds_(folds), points_(input.points), input_delaunay_(input_delaunay) {
-    // An earlier refinement's tetrahedralization of the same points, as it was built (refine.h).
-    if (input_delaunay_ && *input_delaunay_) {
-      first_delaunay_ = std::move(*input_delaunay_);
-      first_delaunay_->rebind(points_);
-    }
+  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds)
+      : options_(options), required_(required), folds_(folds), points_(input.points) {
     // The Delaunay triangulation needs only the points: the importer may have computed it beside its
     // check (kept_tetrahedralization.h), else, given a second thread, it is computed there; either
     // way the facets are grouped meanwhile (1.3M triangles: 2.5 s beside 1.2 s).
-    if (options_.steiner == SteinerMode::Auto && !first_delaunay_) imported_ = claim_kept_tetrahedralization(input);
-    if (options_.steiner == SteinerMode::Auto && !first_delaunay_ && !imported_ && thread_count(options_.threads) > 1)
+    if (options_.steiner == SteinerMode::Auto) imported_ = claim_kept_tetrahedralization(input);
+    if (options_.steiner == SteinerMode::Auto && !imported_ && thread_count(options_.threads) > 1)
       helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
     set_up(input);  // when it throws, helper_ is stopped as it is destroyed
   }
@@ -61,22 +55,48 @@ class Refiner {
   Refiner(const Refiner&) = delete;
   Refiner& operator=(const Refiner&) = delete;
 
-  RefinedPlc run() {
+  // Refinement::next() (refine.h): the first call refines as run() does; a later one looks at every
+  // segment again, splits the pieces of those required since, and goes on from there.
+  RefinedPlc run_again() {
+    more_required_ = looked_;
+    return run(true);
+  }
+
+  // The refined PLC. `keep_going`: this refiner may be asked again (Refinement, refine.h), so its
+  // state is copied out, not handed over.
+  RefinedPlc run(bool keep_going) {
+    // A Refinement's first attempt, with nothing required, only flips the facets: the next then
+    // starts from the input's triangles, as a refinement from scratch does (the same points, the
+    // same triangles), not from the flipped ones.
+    std::optional<std::tuple<std::vector<Triangle>, std::vector<char>, uint64_t>> unflipped;
+    if (keep_going && !adds_points()) unflipped.emplace(tris_, unflipped_, r_.flips);
     if (options_.steiner == SteinerMode::Auto)
       split_until_delaunay();  // flips the facets as it goes
     else
       flip_facets();
     pieces_.put_in_order();  // already: the rounds end in order
-    r_.off_input = facets_off_input();
-    r_.on_segment.assign(on_segment_.begin() + r_.num_input_points, on_segment_.end());
-    r_.plc.points = std::move(points_);
-    for (std::size_t t = 0; t < tris_.size(); ++t) {
-      r_.plc.simplices.insert(r_.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
-      r_.plc.exterior.push_back(groups_.exterior[original_[t]]);
-      // A coplanar facet's triangles no longer match input triangles: they carry the facet's first.
-      r_.original.push_back(options_.facets == FacetMode::Coplanar ? groups_.first_triangle[groups_.facet[original_[t]]] : original_[t]);
+    std::vector<char> off_input = facets_off_input();
+    RefinedPlc out;
+    if (keep_going) {
+      std::optional<DelaunayMesh> delaunay = std::move(r_.delaunay);
+      r_.delaunay.reset();
+      out = r_;
+      out.delaunay = std::move(delaunay);
+      out.plc.points = points_;
+    } else {
+      out = std::move(r_);
+      out.plc.points = std::move(points_);
     }
-    return std::move(r_);
+    out.off_input = std::move(off_input);
+    out.on_segment.assign(on_segment_.begin() + out.num_input_points, on_segment_.end());
+    for (std::size_t t = 0; t < tris_.size(); ++t) {
+      out.plc.simplices.insert(out.plc.simplices.end(), tris_[t].begin(), tris_[t].end());
+      out.plc.exterior.push_back(groups_.exterior[original_[t]]);
+      // A coplanar facet's triangles no longer match input triangles: they carry the facet's first.
+      out.original.push_back(options_.facets == FacetMode::Coplanar ? groups_.first_triangle[groups_.facet[original_[t]]] : original_[t]);
+    }
+    if (unflipped) std::tie(tris_, unflipped_, r_.flips) = std::move(*unflipped);
+    return out;
   }
 
  private:
@@ -89,8 +109,15 @@ class Refiner {
     tris_ = groups_.triangles;
     unflipped_.assign(tris_.size(), 1);
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
-    if (!adds_points()) return;  // nothing to look up: no segment will be split, no point made
-    for (uint32_t v = 0; v < r_.num_input_points; ++v) coordinates_.insert(key_of(p(v)));
+    if (adds_points()) prepare_to_add_points();  // else nothing to look up: no segment will be split, no point made
+  }
+
+  // Every point's coordinates, and every segment in triangle order for the first look at them: once,
+  // before the first round that may add points (while the tetrahedralization is computed beside).
+  void prepare_to_add_points() {
+    if (prepared_) return;
+    prepared_ = true;
+    for (uint32_t v = 0; v < points_.size() / 3; ++v) coordinates_.insert(key_of(p(v)));
     for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
   }
 
@@ -151,9 +178,9 @@ class Refiner {
       pieces_.put_in_order();
       flip_facets();
       r_.delaunay = first_delaunay().mesh();
-      if (input_delaunay_) *input_delaunay_ = std::move(first_delaunay_);  // the input's, handed back
       return;
     }
+    prepare_to_add_points();  // a Refinement whose first attempt required nothing
     DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
       pieces_.put_in_order();        // the last round's fold splits
@@ -174,7 +201,6 @@ class Refiner {
       // Folds come from rounded Steiner points: without any, every facet is exactly flat.
       if (r_.steiner_on.empty()) {
         r_.delaunay = delaunay.mesh();
-        if (input_delaunay_) *input_delaunay_ = std::move(first_delaunay_);  // no point inserted: the input's, handed back
         return;
       }
       flip_folds(delaunay);
@@ -241,19 +267,24 @@ class Refiner {
   // Segments that are not Delaunay, each once, in triangle order (deterministic): a round's first
   // pass (the later ones: changed_segments_not_in). A segment checked in an earlier round and still
   // there was Delaunay then (the others were split), so only new segments and those whose ends the
-  // new points' cavities touched need checking again. In the first round every one is checked, from
-  // the list set_up made while the tetrahedralization was computed (most of the scan's time).
+  // new points' cavities touched need checking again. The first time every one is checked, from
+  // the list set_up made while the tetrahedralization was computed (most of the scan's time); and
+  // every one again when a Refinement continues with more segments required (refine.h).
   std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) {
     std::vector<uint64_t> split;
     const auto check = [&](uint64_t key, bool first_look) {
       if (!delaunay.has_edge(static_cast<uint32_t>(key >> 32), static_cast<uint32_t>(key)) && splits(key, first_look)) split.push_back(key);
     };
-    if (r_.rounds == 0) {
+    if (!looked_) {
       for (const uint64_t key : first_segments_) check(key, true);
       first_segments_ = {};
+      looked_ = true;
+    } else if (more_required_) {
+      for_each_segment([&](uint64_t key) { check(key, false); }, [](uint32_t, uint32_t) { return true; });
     } else {
       for_each_segment([&](uint64_t key) { check(key, false); }, [&](uint32_t a, uint32_t b) { return delaunay.may_have_changed(a, b); });
     }
+    more_required_ = false;
     return split;
   }
 
@@ -617,8 +648,7 @@ class Refiner {
   const RequiredSegments* required_;  // null: every segment
   const Folds folds_;
   std::vector<double> points_;  // first: the helper thread reads it from the start
-  std::unique_ptr<DelaunayEdges> first_delaunay_;
-  std::unique_ptr<DelaunayEdges>* input_delaunay_;  // refine.h; may be null
+  std::unique_ptr<DelaunayEdges> first_delaunay_;  // kept up to date through the rounds (and a Refinement's attempts)
   std::shared_ptr<KeptTetrahedralization> imported_;  // the importer's, claimed, until first_delaunay() waits for it
   std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
   FacetGroups groups_;
@@ -630,7 +660,10 @@ class Refiner {
   std::vector<char> unflipped_;      // per triangle: new, or changed, since the facets' last flips
   TrianglePieces pieces_{tris_, original_, unflipped_};  // splits them; in order after put_in_order()
   std::vector<std::vector<uint32_t>> segment_neighbours_;  // per point, its segments' other ends (once a round needs a second pass)
+  bool prepared_ = false;                 // prepare_to_add_points() has run
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
+  bool looked_ = false;                   // the first round has looked at every segment
+  bool more_required_ = false;            // run_again(): look at every segment again
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at (splits())
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
@@ -639,9 +672,20 @@ class Refiner {
 
 }  // namespace
 
-RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds,
-                  std::unique_ptr<DelaunayEdges>* input_delaunay) {
-  return Refiner(input, options, required, folds, input_delaunay).run();
+RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds) {
+  return Refiner(input, options, required, folds).run(false);
 }
+
+struct Refinement::Impl {
+  Impl(const Plc<3>& input, const Options& options, const RequiredSegments& required)
+      : refiner(input, options, &required, Folds::LeftAsTheyAre) {}
+  Refiner refiner;
+};
+
+Refinement::Refinement(const Plc<3>& input, const Options& options, const RequiredSegments& required)
+    : impl_(std::make_unique<Impl>(input, options, required)) {}
+Refinement::~Refinement() = default;
+
+RefinedPlc Refinement::next() { return impl_->refiner.run_again(); }
 
 }  // namespace sweepcdt::detail
