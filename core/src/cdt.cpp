@@ -212,8 +212,7 @@ std::optional<Triangulation<3>> refine_lazily(const Plc<3>& plc, const Options& 
   for (int attempt = 0; attempt < kLazyAttempts && refinement; ++attempt) {
     ++stats.steiner_attempts;
     try {
-      refined = {};  // the last attempt's, freed before the next is made
-      refined = refinement->next();
+      refined = refinement->next(std::move(refined));  // the last attempt's points and triangles taken back
       take_refined(refined, options, stats, clock);
     } catch (const NoCdtError&) {
       return std::nullopt;  // a limit, or rounding: refining every segment says so again, or succeeds

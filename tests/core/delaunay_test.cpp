@@ -340,6 +340,52 @@ TEST(Delaunay3, EdgesReboundToACopyOfThePoints) {
     for (uint32_t b = a + 1; b < 120; ++b) ASSERT_EQ(edges.has_edge(a, b), expected.count({a, b}) > 0) << a << " " << b;
 }
 
+// A triangulation taken from a mesh (a refinement made again takes its last attempt's, refine.cpp)
+// behaves as the one that made the mesh: has_edge and link_vertices as the triangulation from
+// scratch, and so after more points are inserted into it, grid points included (ties, hull facets
+// in one plane). Every point counts as changed after adopting, as after building.
+TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
+  std::vector<std::pair<std::string, std::vector<double>>> cases;
+  for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(150, 40 + seed));
+  for (uint64_t seed = 0; seed < 3; ++seed) {
+    std::mt19937_64 rng(900 + seed);
+    cases.emplace_back("grid " + std::to_string(seed), fixtures::distinct_grid_points<3>(rng, 120, 4));
+  }
+  for (const auto& [what, all] : cases) {
+    const std::size_t n = all.size() / 3;
+    std::vector<double> points(all.begin(), all.begin() + 3 * (n / 2));
+    const detail::DelaunayEdges built(points);
+    detail::DelaunayEdges adopted(points, built.mesh());
+    EXPECT_EQ(adopted.changed_points().size(), n / 2) << what;
+    for (const std::size_t end : {n / 2, n}) {
+      points.insert(points.end(), all.begin() + points.size(), all.begin() + 3 * end);
+      adopted.insert_new_points();
+      const auto expected = edges_of(points);
+      for (uint32_t a = 0; a < end; ++a) {
+        std::vector<uint32_t> link;
+        adopted.link_vertices(a, link);
+        std::set<uint32_t> got(link.begin(), link.end()), around;
+        for (const auto& [x, y] : expected)
+          if (x == a || y == a) around.insert(x == a ? y : x);
+        ASSERT_EQ(got, around) << what << ": link of " << a << " with " << end << " points";
+        for (uint32_t b = a + 1; b < end; ++b) ASSERT_EQ(adopted.has_edge(a, b), expected.count({a, b}) > 0) << what << ": " << a << " " << b;
+      }
+      std::set<Tet> kept, fresh;
+      const detail::DelaunayMesh mesh = adopted.mesh();
+      for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+        Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
+        std::sort(tet.begin(), tet.end());
+        kept.insert(tet);
+      }
+      for (Tet tet : detail::delaunay_simplices<3>(points)) {
+        std::sort(tet.begin(), tet.end());
+        fresh.insert(tet);
+      }
+      EXPECT_EQ(kept, fresh) << what << " with " << end << " points";
+    }
+  }
+}
+
 // Not a timing assertion: prints both times for the report (bench/sweep_bench cube-points 33000).
 TEST(Delaunay3, Large33kAgainstSweep) {
   const std::vector<double> points = random_points(33000, 2024);

@@ -446,7 +446,7 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   const Options options = mesh_defaults();
   detail::RequiredSegments required;
   detail::Refinement refinement(comb, options, required);
-  const detail::RefinedPlc first = refinement.next();
+  const detail::RefinedPlc first = refinement.next({});
   EXPECT_TRUE(first.steiner_on.empty());
   // Then one input segment that needs points, then every edge.
   detail::RequiredSegments every;
@@ -459,9 +459,9 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   }
   asked[1] = every;
   required = asked[0];
-  const detail::RefinedPlc second = refinement.next();
+  const detail::RefinedPlc second = refinement.next(detail::RefinedPlc(first));
   required = asked[1];
-  const detail::RefinedPlc third = refinement.next();
+  const detail::RefinedPlc third = refinement.next(detail::RefinedPlc(second));
   ASSERT_GT(second.steiner_on.size(), 0u) << "the comb's segments need Steiner points: nothing exercised";
   ASSERT_GT(third.steiner_on.size(), second.steiner_on.size()) << "the second attempt required every segment: nothing continued";
   for (const auto& [r, segments] : {std::pair{&second, &asked[0]}, std::pair{&third, &asked[1]}}) {
@@ -490,9 +490,10 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   // From nothing required to everything in one step is a refinement from scratch.
   detail::RequiredSegments later;
   detail::Refinement two_steps(comb, options, later);
-  EXPECT_TRUE(two_steps.next().steiner_on.empty());
+  detail::RefinedPlc nothing = two_steps.next({});
+  EXPECT_TRUE(nothing.steiner_on.empty());
   later = asked[1];
-  const detail::RefinedPlc continued = two_steps.next();
+  const detail::RefinedPlc continued = two_steps.next(std::move(nothing));
   const detail::RefinedPlc fresh = detail::refine(comb, options, &asked[1], detail::Folds::LeftAsTheyAre);
   EXPECT_EQ(continued.plc.points, fresh.plc.points);
   EXPECT_EQ(continued.on_segment, fresh.on_segment);

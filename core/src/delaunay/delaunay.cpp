@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -166,6 +167,51 @@ class Delaunay {
       insert(rest[k]);
       if (inserted && k % kReportEvery == kReportEvery - 1) inserted(D + 1 + k + 1);  // the first simplex's, then these
     }
+  }
+
+  // The triangulation `mesh` (as mesh() gives it) of all the points, taken as if built here: the
+  // finite simplices in its order, then a ghost on each hull facet, linked as make_first_simplex()
+  // links them. Every point counts as inserted last (as after build()).
+  void adopt(const DelaunayMesh& mesh) {
+    const std::size_t n = points_->size() / D, count = mesh.tets.size() / (D + 1);
+    vertex_simplex_.assign(n, kInfinite);
+    touched_round_.assign(n, round_);
+    changed_.resize(n);
+    std::iota(changed_.begin(), changed_.end(), 0u);
+    first_new_ = 0;
+    cells_.clear();
+    cells_.reserve(kCellsPerPoint * n + 16);
+    for (std::size_t t = 0; t < count; ++t) {
+      Simplex v;
+      std::copy_n(mesh.tets.begin() + (D + 1) * t, D + 1, v.begin());
+      new_simplex(v);
+    }
+    std::map<std::array<uint32_t, D - 1>, std::pair<uint32_t, int>> hull_ridges;  // a ghost's facet through oo, by its finite vertices
+    for (uint32_t t = 0; t < count; ++t)
+      for (int i = 0; i <= D; ++i) {
+        const uint32_t across = mesh.neighbors[(D + 1) * t + i];
+        if (across != kInfinite) {
+          cells_[t].n[i] = across / (D + 1) << kLinkBits | across % (D + 1);
+          continue;
+        }
+        Simplex g = cells_[t].v;
+        g[i] = kInfinite;
+        std::swap(g[(i + 1) % (D + 1)], g[(i + 2) % (D + 1)]);
+        const uint32_t ghost = new_simplex(g);
+        link(t, i, ghost, i);
+        for (int j = 0; j <= D; ++j) {
+          if (j == i) continue;
+          std::array<uint32_t, D - 1> ridge;
+          for (int k = 0, r = 0; k <= D; ++k)
+            if (k != i && k != j) ridge[r++] = g[k];
+          std::sort(ridge.begin(), ridge.end());
+          const auto [it, first] = hull_ridges.emplace(ridge, std::pair{ghost, j});
+          if (!first) link(ghost, j, it->second.first, it->second.second);
+        }
+      }
+    for (uint32_t t = 0; t < count; ++t)  // a finite simplex at each point (new_simplex noted the last made)
+      for (const uint32_t v : cells_[t].v) vertex_simplex_[v] = t;
+    last_ = 0;
   }
 
   // The live finite simplices, renumbered densely, with their adjacency (delaunay.h).
@@ -614,6 +660,10 @@ DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const std::funct
     : impl_(std::make_unique<Impl>(points)) {
   check_points<3>(points);
   impl_->triangulation.build(brio_order<3>(points), inserted);
+}
+
+DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const DelaunayMesh& mesh) : impl_(std::make_unique<Impl>(points)) {
+  impl_->triangulation.adopt(mesh);
 }
 
 DelaunayEdges::~DelaunayEdges() = default;

@@ -39,54 +39,111 @@ std::size_t steiner_budget(std::size_t input_points) { return 100 * input_points
 
 class Refiner {
  public:
-  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds)
-      : options_(options), required_(required), folds_(folds), points_(input.points) {
+  // `input_delaunay`: the Delaunay tetrahedralization of input.points, when an earlier refiner that
+  // added no point computed it (Refinement); else the importer's, or one computed here.
+  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds,
+          std::unique_ptr<DelaunayEdges> input_delaunay = nullptr)
+      : options_(options), required_(required), folds_(folds), points_(input.points), first_delaunay_(std::move(input_delaunay)) {
+    if (first_delaunay_) first_delaunay_->rebind(points_);
     // The Delaunay triangulation needs only the points: the importer may have computed it beside its
     // check (kept_tetrahedralization.h), else, given a second thread, it is computed there; either
     // way the facets are grouped meanwhile (1.3M triangles: 2.5 s beside 1.2 s).
-    if (options_.steiner == SteinerMode::Auto) imported_ = claim_kept_tetrahedralization(input);
-    if (options_.steiner == SteinerMode::Auto && !imported_ && thread_count(options_.threads) > 1)
+    if (options_.steiner == SteinerMode::Auto && !first_delaunay_) imported_ = claim_kept_tetrahedralization(input);
+    if (options_.steiner == SteinerMode::Auto && !first_delaunay_ && !imported_ && thread_count(options_.threads) > 1)
       helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
     set_up(input);  // when it throws, helper_ is stopped as it is destroyed
+  }
+
+  // What a Refinement keeps of a refiner that added points, beside the refined PLC it handed out,
+  // to make it again for the next attempt (set_aside()).
+  struct Kept {
+    std::unique_ptr<DelaunayEdges> delaunay;  // when it added no point: its tetrahedralization of the input points, and nothing else
+    std::vector<uint32_t> original;           // original_
+    std::vector<double> parameter;            // parameter_
+    std::vector<uint64_t> tolerated, fold_segments;  // sorted
+  };
+  // The refiner that handed out `last` and was set aside as `kept`, made again, with the
+  // tetrahedralization `last` carries (else computed again, on a second thread while the facets are
+  // grouped, given one).
+  Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds, RefinedPlc&& last, Kept&& kept)
+      : options_(options), required_(required), folds_(folds), points_(std::move(last.plc.points)) {
+    if (last.delaunay) first_delaunay_ = std::make_unique<DelaunayEdges>(points_, *last.delaunay);
+    last.delaunay.reset();
+    if (!first_delaunay_ && thread_count(options_.threads) > 1)
+      helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
+    groups_ = group_facets(input, options_.facets);
+    tolerated_.insert(kept.tolerated.begin(), kept.tolerated.end());
+    fold_segments_.insert(kept.fold_segments.begin(), kept.fold_segments.end());
+    r_.plc.region_seeds = input.region_seeds;
+    r_.num_input_points = last.num_input_points;
+    r_.facets = last.facets;
+    r_.rounds = last.rounds;
+    r_.flips = last.flips;
+    r_.tetrahedralization_recorded = last.tetrahedralization_recorded;
+    r_.steiner_on = std::move(last.steiner_on);
+    r_.made_from = std::move(last.made_from);
+    on_segment_.assign(r_.num_input_points, {kNone, kNone});
+    on_segment_.insert(on_segment_.end(), last.on_segment.begin(), last.on_segment.end());
+    parameter_ = std::move(kept.parameter);
+    original_ = std::move(kept.original);
+    for (std::size_t t = 0; t < last.plc.simplices.size(); t += 3)
+      tris_.push_back({last.plc.simplices[t], last.plc.simplices[t + 1], last.plc.simplices[t + 2]});
+    unflipped_.assign(tris_.size(), 0);  // every facet flipped at the end of the last attempt
+    prepared_ = looked_ = true;
+    pieces_of_segments();
+  }
+
+  // groups_.segments, from the input's, for the triangles as they are: an edge of them is a piece of
+  // an input segment when both its ends lie on that segment (its ends, or Steiner points on it; an
+  // edge between two such points lies along it, and a triangle edge holds no point inside: its
+  // triangles were split there); and the folds made segments.
+  void pieces_of_segments() {
+    std::unordered_set<uint64_t> pieces(fold_segments_.begin(), fold_segments_.end());
+    for (const Triangle& t : tris_)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t a = t[i], b = t[(i + 1) % 3];
+        const std::array<uint32_t, 2> s = input_segment_of(a, b);
+        const auto on = [&](uint32_t v) { return v == s[0] || v == s[1] || (!is_input(v) && on_segment_[v] == s); };
+        if (s[0] != kNone && on(a) && on(b) && groups_.segments.count(edge_key(s[0], s[1]))) pieces.insert(edge_key(a, b));
+      }
+    groups_.segments = std::move(pieces);
   }
   ~Refiner() {
     if (imported_) imported_->helper.stop();  // claimed and never waited for: refinement failed
   }
+
+  // What a Refinement keeps after run() to go on (above); the rest is freed with the refiner. While
+  // the caller sweeps the refined PLC only that is kept: the refiner alive, with its
+  // tetrahedralization, look-up tables and copies, raised the peak memory of the parts that need two
+  // attempts, nearly all, by 7–23% for nothing (hollow_sphere_fine 46.6 → 57.4 MiB). A refiner that
+  // added no point keeps its tetrahedralization of the input points, and the next starts from the
+  // input with it, as a refinement from scratch does (the same points and triangles).
+  Kept set_aside(bool added_points) {
+    if (!added_points) return Kept{std::move(first_delaunay_), {}, {}, {}, {}};
+    Kept kept{nullptr, std::move(original_), std::move(parameter_), {tolerated_.begin(), tolerated_.end()},
+              {fold_segments_.begin(), fold_segments_.end()}};
+    for (auto* keys : {&kept.tolerated, &kept.fold_segments}) std::sort(keys->begin(), keys->end());
+    return kept;
+  }
   Refiner(const Refiner&) = delete;
   Refiner& operator=(const Refiner&) = delete;
 
-  // Refinement::next() (refine.h): the first call refines as run() does; a later one looks at every
-  // segment again, splits the pieces of those required since, and goes on from there.
+  // Refinement::next() (refine.h): a refiner made again from what an earlier one set aside looks at
+  // every segment again, splits the pieces of those required since, and goes on from there.
   RefinedPlc run_again() {
     more_required_ = looked_;
-    return run(true);
+    return run();
   }
 
-  // The refined PLC. `keep_going`: this refiner may be asked again (Refinement, refine.h), so its
-  // state is copied out, not handed over.
-  RefinedPlc run(bool keep_going) {
-    // A Refinement's first attempt, with nothing required, only flips the facets: the next then
-    // starts from the input's triangles, as a refinement from scratch does (the same points, the
-    // same triangles), not from the flipped ones.
-    std::optional<std::tuple<std::vector<Triangle>, std::vector<char>, uint64_t>> unflipped;
-    if (keep_going && !adds_points()) unflipped.emplace(tris_, unflipped_, r_.flips);
+  RefinedPlc run() {
     if (options_.steiner == SteinerMode::Auto)
       split_until_delaunay();  // flips the facets as it goes
     else
       flip_facets();
     pieces_.put_in_order();  // already: the rounds end in order
     std::vector<char> off_input = facets_off_input();
-    RefinedPlc out;
-    if (keep_going) {
-      std::optional<DelaunayMesh> delaunay = std::move(r_.delaunay);
-      r_.delaunay.reset();
-      out = r_;
-      out.delaunay = std::move(delaunay);
-      out.plc.points = points_;
-    } else {
-      out = std::move(r_);
-      out.plc.points = std::move(points_);
-    }
+    RefinedPlc out = std::move(r_);
+    out.plc.points = std::move(points_);
     out.off_input = std::move(off_input);
     out.on_segment.assign(on_segment_.begin() + out.num_input_points, on_segment_.end());
     for (std::size_t t = 0; t < tris_.size(); ++t) {
@@ -95,7 +152,6 @@ class Refiner {
       // A coplanar facet's triangles no longer match input triangles: they carry the facet's first.
       out.original.push_back(options_.facets == FacetMode::Coplanar ? groups_.first_triangle[groups_.facet[original_[t]]] : original_[t]);
     }
-    if (unflipped) std::tie(tris_, unflipped_, r_.flips) = std::move(*unflipped);
     return out;
   }
 
@@ -115,9 +171,10 @@ class Refiner {
   // Every point's coordinates, and every segment in triangle order for the first look at them: once,
   // before the first round that may add points (while the tetrahedralization is computed beside).
   void prepare_to_add_points() {
+    if (coordinates_.empty())
+      for (uint32_t v = 0; v < points_.size() / 3; ++v) coordinates_.insert(key_of(p(v)));
     if (prepared_) return;
     prepared_ = true;
-    for (uint32_t v = 0; v < points_.size() / 3; ++v) coordinates_.insert(key_of(p(v)));
     for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
   }
 
@@ -673,19 +730,34 @@ class Refiner {
 }  // namespace
 
 RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds) {
-  return Refiner(input, options, required, folds).run(false);
+  return Refiner(input, options, required, folds).run();
 }
 
 struct Refinement::Impl {
-  Impl(const Plc<3>& input, const Options& options, const RequiredSegments& required)
-      : refiner(input, options, &required, Folds::LeftAsTheyAre) {}
-  Refiner refiner;
+  const Plc<3>& input;
+  const Options& options;
+  const RequiredSegments& required;
+  std::optional<Refiner::Kept> kept;  // by the last attempt's refiner
 };
 
 Refinement::Refinement(const Plc<3>& input, const Options& options, const RequiredSegments& required)
-    : impl_(std::make_unique<Impl>(input, options, required)) {}
+    : impl_(std::make_unique<Impl>(Impl{input, options, required, {}})) {}
 Refinement::~Refinement() = default;
 
-RefinedPlc Refinement::next() { return impl_->refiner.run_again(); }
+RefinedPlc Refinement::next(RefinedPlc&& last) {
+  Impl& m = *impl_;
+  std::unique_ptr<Refiner> refiner;
+  if (!m.kept || m.kept->delaunay) {  // the first attempt, or one after an attempt that added no point
+    last = {};  // freed first: its tetrahedralization is as large as the one kept
+    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::LeftAsTheyAre, m.kept ? std::move(m.kept->delaunay) : nullptr);
+  } else {
+    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::LeftAsTheyAre, std::move(last), std::move(*m.kept));
+    last = {};
+  }
+  m.kept.reset();
+  RefinedPlc refined = refiner->run_again();
+  m.kept = refiner->set_aside(!refined.steiner_on.empty());
+  return refined;
+}
 
 }  // namespace sweepcdt::detail

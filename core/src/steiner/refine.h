@@ -110,7 +110,8 @@ RefinedPlc refine(const Plc<3>& input, const Options& options, const RequiredSeg
 // surface the third attempt refined from scratch for 5 s to add 552 points to the second's 107973.
 // The points may differ from a refinement from scratch with the same segments required (they were
 // split in another order); each attempt's PLC is decided exactly by the cavity sweep all the same.
-// Holds the tetrahedralization while the caller sweeps: destroy it as soon as it is not needed.
+// Holds the tetrahedralization of the input points until the first attempt that adds points: destroy
+// it as soon as it is not needed.
 class Refinement {
  public:
   // `required` must outlive this object; the caller adds to it between calls of next().
@@ -119,8 +120,10 @@ class Refinement {
   Refinement(const Refinement&) = delete;
   Refinement& operator=(const Refinement&) = delete;
   // The refined PLC with the pieces of every segment required now Delaunay (the first call: as
-  // refine(input, options, &required, Folds::LeftAsTheyAre)).
-  RefinedPlc next();
+  // refine(input, options, &required, Folds::LeftAsTheyAre)). `last`: what the last call returned,
+  // or nothing on the first; its points and triangles are taken back (between attempts only what
+  // cannot be made from them again is kept: refine.cpp, Refiner::set_aside).
+  RefinedPlc next(RefinedPlc&& last);
 
  private:
   struct Impl;
