@@ -346,7 +346,8 @@ TEST(Delaunay3, EdgesReboundToACopyOfThePoints) {
 // A triangulation taken from a mesh (a refinement made again takes its last attempt's, refine.cpp)
 // behaves as the one that made the mesh: has_edge and link_vertices as the triangulation from
 // scratch, and so after more points are inserted into it, grid points included (ties, hull facets
-// in one plane). Every point counts as changed after adopting, as after building.
+// in one plane). Every point counts as changed after adopting, as after building; a mesh that
+// misses a point is refused.
 TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
   std::vector<std::pair<std::string, std::vector<double>>> cases;
   for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(150, 40 + seed));
@@ -358,8 +359,15 @@ TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
     const std::size_t n = all.size() / 3;
     std::vector<double> points(all.begin(), all.begin() + 3 * (n / 2));
     const detail::DelaunayEdges built(points);
-    detail::DelaunayEdges adopted(points, built.mesh());
+    const std::unique_ptr<detail::DelaunayEdges> taken = detail::DelaunayEdges::from_mesh(points, built.mesh());
+    ASSERT_NE(taken, nullptr) << what;
+    detail::DelaunayEdges& adopted = *taken;
     EXPECT_EQ(adopted.changed_points().size(), n / 2) << what;
+    // A mesh of fewer points than given is none of theirs.
+    const std::vector<double> more(all.begin(), all.begin() + 3 * (n / 2 + 1));
+    EXPECT_EQ(detail::DelaunayEdges::from_mesh(more, built.mesh()), nullptr) << what;
+    const std::vector<double> fewer(all.begin(), all.begin() + 3 * (n / 2 - 1));
+    EXPECT_EQ(detail::DelaunayEdges::from_mesh(fewer, built.mesh()), nullptr) << what;
     for (const std::size_t end : {n / 2, n}) {
       points.insert(points.end(), all.begin() + points.size(), all.begin() + 3 * end);
       adopted.insert_new_points();

@@ -171,8 +171,9 @@ class Delaunay {
 
   // The triangulation `mesh` (as mesh() gives it) of all the points, taken as if built here: the
   // finite simplices in its order, then a ghost on each hull facet, linked as make_first_simplex()
-  // links them. Every point counts as inserted last (as after build()).
-  void adopt(const DelaunayMesh& mesh) {
+  // links them. Every point counts as inserted last (as after build()). False when some point is
+  // no vertex of the mesh.
+  bool adopt(const DelaunayMesh& mesh) {
     const std::size_t n = points_->size() / D, count = mesh.tets.size() / (D + 1);
     vertex_simplex_.assign(n, kInfinite);
     touched_round_.assign(n, round_);
@@ -181,6 +182,7 @@ class Delaunay {
     first_new_ = 0;
     cells_.clear();
     cells_.reserve(kCellsPerPoint * n + 16);
+    if (std::any_of(mesh.tets.begin(), mesh.tets.end(), [&](uint32_t v) { return v >= n; })) return false;
     for (std::size_t t = 0; t < count; ++t) {
       Simplex v;
       std::copy_n(mesh.tets.begin() + (D + 1) * t, D + 1, v.begin());
@@ -209,9 +211,11 @@ class Delaunay {
           if (!first) link(ghost, j, it->second.first, it->second.second);
         }
       }
-    for (uint32_t t = 0; t < count; ++t)  // a finite simplex at each point (new_simplex noted the last made)
+    std::fill(vertex_simplex_.begin(), vertex_simplex_.end(), kInfinite);
+    for (uint32_t t = 0; t < count; ++t)  // a finite simplex at each point
       for (const uint32_t v : cells_[t].v) vertex_simplex_[v] = t;
     last_ = 0;
+    return std::find(vertex_simplex_.begin(), vertex_simplex_.end(), kInfinite) == vertex_simplex_.end();
   }
 
   // The live finite simplices, renumbered densely, with their adjacency (delaunay.h).
@@ -662,8 +666,11 @@ DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const std::funct
   impl_->triangulation.build(brio_order<3>(points), inserted);
 }
 
-DelaunayEdges::DelaunayEdges(const std::vector<double>& points, const DelaunayMesh& mesh) : impl_(std::make_unique<Impl>(points)) {
-  impl_->triangulation.adopt(mesh);
+std::unique_ptr<DelaunayEdges> DelaunayEdges::from_mesh(const std::vector<double>& points, const DelaunayMesh& mesh) {
+  std::unique_ptr<DelaunayEdges> edges(new DelaunayEdges());
+  edges->impl_ = std::make_unique<Impl>(points);
+  if (!edges->impl_->triangulation.adopt(mesh)) return nullptr;
+  return edges;
 }
 
 DelaunayEdges::~DelaunayEdges() = default;

@@ -57,9 +57,10 @@ class DelaunayEdges {
   // Triangulates `points`, which must outlive this object; same requirements as above. `inserted`
   // as for delaunay_mesh (it may throw to cancel).
   explicit DelaunayEdges(const std::vector<double>& points, const std::function<void(std::size_t)>& inserted = {});
-  // The same from `mesh`, the Delaunay triangulation of all of `points` as mesh() gives it (refine.cpp:
-  // a refinement made again takes the one its last attempt handed out), without computing it again.
-  DelaunayEdges(const std::vector<double>& points, const DelaunayMesh& mesh);
+  // The same from `mesh`, the Delaunay triangulation of `points` as mesh() gives it (refine.cpp: a
+  // refinement made again takes the one its last attempt handed out), without computing it again;
+  // null when some point is no vertex of it (then it is not that triangulation).
+  static std::unique_ptr<DelaunayEdges> from_mesh(const std::vector<double>& points, const DelaunayMesh& mesh);
   ~DelaunayEdges();
   // Reads the points from `points` from now on: a copy of the vector given so far, or a longer one
   // that starts with its points (it must outlive this object).
@@ -81,6 +82,7 @@ class DelaunayEdges {
   DelaunayMesh mesh() const;
 
  private:
+  DelaunayEdges() = default;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

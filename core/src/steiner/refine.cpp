@@ -54,8 +54,8 @@ class Refiner {
     set_up(input);  // when it throws, helper_ is stopped as it is destroyed
   }
 
-  // What a Refinement keeps of a refiner that added points, beside the refined PLC it handed out,
-  // to make it again for the next attempt (set_aside()).
+  // What a Refinement keeps of a refiner between attempts, beside the refined PLC it handed out, to
+  // make it again for the next one (set_aside()).
   struct Kept {
     std::unique_ptr<DelaunayEdges> delaunay;  // when it added no point: its tetrahedralization of the input points, and nothing else
     std::vector<uint32_t> original;           // original_
@@ -67,7 +67,7 @@ class Refiner {
   // grouped, given one).
   Refiner(const Plc<3>& input, const Options& options, const RequiredSegments* required, Folds folds, RefinedPlc&& last, Kept&& kept)
       : options_(options), required_(required), folds_(folds), points_(std::move(last.plc.points)) {
-    if (last.delaunay) first_delaunay_ = std::make_unique<DelaunayEdges>(points_, *last.delaunay);
+    if (last.delaunay) first_delaunay_ = DelaunayEdges::from_mesh(points_, *last.delaunay);
     last.delaunay.reset();
     if (!first_delaunay_ && thread_count(options_.threads) > 1)
       helper_.emplace([this](const auto& inserted) { return std::make_unique<DelaunayEdges>(points_, inserted); });
@@ -237,7 +237,7 @@ class Refiner {
       r_.delaunay = first_delaunay().mesh();
       return;
     }
-    prepare_to_add_points();  // a Refinement whose first attempt required nothing
+    prepare_to_add_points();  // a refiner made again (Refinement): the coordinates, looked up again
     DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
       pieces_.put_in_order();        // the last round's fold splits
@@ -705,7 +705,7 @@ class Refiner {
   const RequiredSegments* required_;  // null: every segment
   const Folds folds_;
   std::vector<double> points_;  // first: the helper thread reads it from the start
-  std::unique_ptr<DelaunayEdges> first_delaunay_;  // kept up to date through the rounds (and a Refinement's attempts)
+  std::unique_ptr<DelaunayEdges> first_delaunay_;  // kept up to date through the rounds
   std::shared_ptr<KeptTetrahedralization> imported_;  // the importer's, claimed, until first_delaunay() waits for it
   std::optional<InBackground<std::unique_ptr<DelaunayEdges>>> helper_;  // after points_, which it reads
   FacetGroups groups_;
