@@ -409,7 +409,7 @@ TEST(Steiner, RefinesOnlyTheRequiredSegments) {
 // Lazy refinement's attempts (cdt.cpp) continue one refinement (detail::Refinement) with more input
 // segments required each time. Each attempt must leave every piece of every segment required so far
 // an edge of the Delaunay tetrahedralization of its points — checked against that tetrahedralization
-// computed from scratch, which the refinement's own kept one must also equal — and with every
+// computed from scratch, which the one the refinement hands out must also equal — and with every
 // segment required, the refined PLC must have a CDT (the theorem; the comb has float coordinates,
 // so its points lie on their segments and make no folds). The first attempt, with nothing
 // required, adds no point, and the next one, starting from it, refines as from scratch.
@@ -463,7 +463,7 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   required = asked[1];
   const detail::RefinedPlc third = refinement.next(detail::RefinedPlc(second));
   ASSERT_GT(second.steiner_on.size(), 0u) << "the comb's segments need Steiner points: nothing exercised";
-  ASSERT_GT(third.steiner_on.size(), second.steiner_on.size()) << "the second attempt required every segment: nothing continued";
+  ASSERT_GT(third.steiner_on.size(), second.steiner_on.size()) << "the third attempt added no point: nothing continued";
   for (const auto& [r, segments] : {std::pair{&second, &asked[0]}, std::pair{&third, &asked[1]}}) {
     const std::set<std::array<uint32_t, 2>> edges = delaunay_edges(r->plc.points);
     const std::vector<std::array<uint32_t, 2>> pieces = required_pieces(*r, *segments);
@@ -496,6 +496,7 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   const detail::RefinedPlc continued = two_steps.next(std::move(nothing));
   const detail::RefinedPlc fresh = detail::refine(comb, options, &asked[1], detail::Folds::LeftAsTheyAre);
   EXPECT_EQ(continued.plc.points, fresh.plc.points);
+  EXPECT_EQ(continued.plc.simplices, fresh.plc.simplices);
   EXPECT_EQ(continued.on_segment, fresh.on_segment);
 }
 

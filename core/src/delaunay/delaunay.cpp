@@ -181,6 +181,9 @@ class Delaunay {
     std::iota(changed_.begin(), changed_.end(), 0u);
     first_new_ = 0;
     cells_.clear();
+    marks_.clear();
+    dead_.clear();
+    free_.clear();
     cells_.reserve(kCellsPerPoint * n + 16);
     if (std::any_of(mesh.tets.begin(), mesh.tets.end(), [&](uint32_t v) { return v >= n; })) return false;
     for (std::size_t t = 0; t < count; ++t) {
