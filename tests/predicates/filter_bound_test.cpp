@@ -13,7 +13,6 @@ namespace {
 using namespace sweepcdt::testutil;
 namespace ref = sweepcdt::ref;
 namespace detail = sweepcdt::predicates::detail;
-using detail::Bound;
 
 // The worst |value - exact| / error seen, as a double (rationals: the comparison itself is exact).
 struct WorstRatio {
@@ -79,8 +78,10 @@ TEST(FilterBounds, FourDimensionalBoundsHoldAndColumnSumsAreNeverTighter) {
       s[i][4] = lift;
     }
     const ref::Q exact_orient = ref::det(o), exact_insphere = ref::det(s);
-    const detail::Estimate os = detail::orient4_estimate<Bound::ColumnSums>(simplex), op = detail::orient4_estimate(simplex);
-    const detail::Estimate is = detail::insphere4_estimate<Bound::ColumnSums>(all), ip = detail::insphere4_estimate(all);
+    const detail::Orient4Filter orient(simplex);
+    const detail::Insphere4Filter insphere(all);
+    const detail::Estimate os = orient.column_sums(), op = orient.permanent();
+    const detail::Estimate is = insphere.column_sums(), ip = insphere.permanent();
     orient_sums.check(os, exact_orient, "orient4, column sums");
     orient_permanent.check(op, exact_orient, "orient4, permanent");
     insphere_sums.check(is, exact_insphere, "insphere4, column sums");

@@ -50,9 +50,6 @@ inline double column_sums_bound(int rounds, const std::array<double, N>& column_
   return error_bound(rounds, product * (1.0 + 0x1p-40), largest_difference);
 }
 
-// Which bound a filter computes: the column sums' (cheap, looser; a first stage), or the permanent's.
-enum class Bound { ColumnSums, Permanent };
-
 // det [p_i - p_3]_{i<3}. Rounding counts: differences 1; 2x2 minors 1+1+1 = 3 then the subtraction
 // 4; 3x3 determinant: 4 + 1 + 1 = 6 per term, two sequential additions: 8.
 inline Estimate orient3_estimate(const Coords<4>& p) {

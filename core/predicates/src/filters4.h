@@ -127,17 +127,9 @@ class Insphere4Filter {
   std::array<double, 5> sums_{};
 };
 
-// One bound of each, for callers that want only one (sweep_keys.cpp: the permanent's, as an enclosure).
-template <Bound B = Bound::Permanent>
-inline Estimate orient4_estimate(const Coords<5>& p) {
-  const Orient4Filter filter(p);
-  return B == Bound::ColumnSums ? filter.column_sums() : filter.permanent();
-}
-template <Bound B = Bound::Permanent>
-inline Estimate insphere4_estimate(const Coords<6>& p) {
-  const Insphere4Filter filter(p);
-  return B == Bound::ColumnSums ? filter.column_sums() : filter.permanent();
-}
+// The permanent's bound alone, for code generic in D (below; sweep_keys.cpp: an enclosure).
+inline Estimate orient4_estimate(const Coords<5>& p) { return Orient4Filter(p).permanent(); }
+inline Estimate insphere4_estimate(const Coords<6>& p) { return Insphere4Filter(p).permanent(); }
 
 // The hand-written filters by dimension, for code generic in D (sweep_keys.cpp).
 template <int D>
@@ -145,12 +137,12 @@ inline constexpr bool kHandWrittenFilter = D == 3 || D == 4;
 template <int D>
 Estimate orient_estimate(const Coords<D + 1>& p) {
   if constexpr (D == 3) return orient3_estimate(p);
-  else return orient4_estimate<>(p);
+  else return orient4_estimate(p);
 }
 template <int D>
 Estimate insphere_estimate(const Coords<D + 2>& p) {
   if constexpr (D == 3) return insphere3_estimate(p);
-  else return insphere4_estimate<>(p);
+  else return insphere4_estimate(p);
 }
 
 }  // namespace sweepcdt::predicates::detail

@@ -170,8 +170,8 @@ class Delaunay {
   }
 
   // The triangulation `mesh` (as mesh() gives it) of all the points, taken as if built here: the
-  // finite simplices in its order, then a ghost on each hull facet, linked as make_first_simplex()
-  // links them. Every point counts as inserted last (as after build()). False when some point is
+  // finite simplices in its order, then a ghost on each hull facet (add_ghost, link_ghosts, as
+  // make_first_simplex() makes them). Every point counts as inserted last (as after build()). False when some point is
   // no vertex of the mesh.
   bool adopt(const DelaunayMesh& mesh) {
     const std::size_t n = points_->size() / D, count = mesh.tets.size() / (D + 1);
@@ -191,29 +191,14 @@ class Delaunay {
       std::copy_n(mesh.tets.begin() + (D + 1) * t, D + 1, v.begin());
       new_simplex(v);
     }
-    std::map<std::array<uint32_t, D - 1>, std::pair<uint32_t, int>> hull_ridges;  // a ghost's facet through oo, by its finite vertices
+    std::vector<uint32_t> ghosts;
     for (uint32_t t = 0; t < count; ++t)
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = mesh.neighbors[(D + 1) * t + i];
-        if (across != kInfinite) {
-          cells_[t].n[i] = across / (D + 1) << kLinkBits | across % (D + 1);
-          continue;
-        }
-        Simplex g = cells_[t].v;
-        g[i] = kInfinite;
-        std::swap(g[(i + 1) % (D + 1)], g[(i + 2) % (D + 1)]);
-        const uint32_t ghost = new_simplex(g);
-        link(t, i, ghost, i);
-        for (int j = 0; j <= D; ++j) {
-          if (j == i) continue;
-          std::array<uint32_t, D - 1> ridge;
-          for (int k = 0, r = 0; k <= D; ++k)
-            if (k != i && k != j) ridge[r++] = g[k];
-          std::sort(ridge.begin(), ridge.end());
-          const auto [it, first] = hull_ridges.emplace(ridge, std::pair{ghost, j});
-          if (!first) link(ghost, j, it->second.first, it->second.second);
-        }
+        if (across == kInfinite) ghosts.push_back(add_ghost(t, i));
+        else cells_[t].n[i] = across / (D + 1) << kLinkBits | across % (D + 1);
       }
+    link_ghosts(ghosts);
     std::fill(vertex_simplex_.begin(), vertex_simplex_.end(), kInfinite);
     for (uint32_t t = 0; t < count; ++t)  // a finite simplex at each point
       for (const uint32_t v : cells_[t].v) vertex_simplex_[v] = t;
@@ -371,28 +356,39 @@ class Delaunay {
   // a point strictly outside its hull facet gives a positive simplex.
   void make_first_simplex(const Simplex& s) {
     const uint32_t inner = new_simplex(s);
-    for (int i = 0; i <= D; ++i) {
-      Simplex g = s;
-      g[i] = kInfinite;
-      std::swap(g[(i + 1) % (D + 1)], g[(i + 2) % (D + 1)]);
-      const uint32_t ghost = new_simplex(g);
-      link(inner, i, ghost, i);
-    }
-    // Ghost-ghost facets: match by vertex sets (D + 2 simplices, brute force is fine).
-    for (uint32_t a = 1; a < D + 2; ++a)
-      for (uint32_t b = a + 1; b < D + 2; ++b)
-        for (int i = 0; i <= D; ++i)
-          for (int j = 0; j <= D; ++j)
-            if (sorted_facet(a, i) == sorted_facet(b, j)) link(a, i, b, j);
+    std::vector<uint32_t> ghosts;
+    for (int i = 0; i <= D; ++i) ghosts.push_back(add_ghost(inner, i));
+    link_ghosts(ghosts);
     last_ = inner;
   }
 
-  std::array<uint32_t, D> sorted_facet(uint32_t t, int i) const {
-    std::array<uint32_t, D> f;
-    for (int k = 0, r = 0; k <= D; ++k)
-      if (k != i) f[r++] = cells_[t].v[k];
-    std::sort(f.begin(), f.end());
-    return f;
+  // A ghost on facet i of the finite simplex t (a hull facet), linked to t: t with vertex i replaced
+  // by the infinite vertex and two other vertices swapped, so positive as ghosts are (above).
+  uint32_t add_ghost(uint32_t t, int i) {
+    Simplex g = cells_[t].v;
+    g[i] = kInfinite;
+    std::swap(g[(i + 1) % (D + 1)], g[(i + 2) % (D + 1)]);
+    const uint32_t ghost = new_simplex(g);
+    link(t, i, ghost, i);
+    return ghost;
+  }
+
+  // The ghosts' facets through the infinite vertex, linked in pairs: those with the same finite
+  // vertices (a ridge of the hull) face each other.
+  void link_ghosts(const std::vector<uint32_t>& ghosts) {
+    std::map<std::array<uint32_t, D - 1>, std::pair<uint32_t, int>> open;
+    for (const uint32_t g : ghosts) {
+      const int at = infinite_index(g);
+      for (int j = 0; j <= D; ++j) {
+        if (j == at) continue;
+        std::array<uint32_t, D - 1> ridge;
+        for (int k = 0, r = 0; k <= D; ++k)
+          if (k != at && k != j) ridge[r++] = cells_[g].v[k];
+        std::sort(ridge.begin(), ridge.end());
+        const auto [it, first] = open.emplace(ridge, std::pair{g, j});
+        if (!first) link(g, j, it->second.first, it->second.second);
+      }
+    }
   }
 
   // ------------------------------------------------------------------------------------------
