@@ -17,7 +17,7 @@ sys.path.append(os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__f
 import FreeCAD  # noqa: E402
 import MeshPart  # noqa: E402
 import Part  # noqa: E402
-from make_cad_parts import DEFLECTIONS  # noqa: E402  the committed parts' "standard" and "fine"
+from make_cad_parts import DEFLECTIONS, oblique_cylinders, perforated_tube  # noqa: E402  the committed parts' "standard" and "fine"
 
 V = FreeCAD.Vector
 TILT = (V(0.3, 0.5, 0.8), 23)  # as run_cad.py --rotated: a part placed at an angle in an assembly
@@ -126,18 +126,68 @@ def tiny_fillet():  # 0.2 mm fillets on a 200 mm block
     return b.makeFillet(0.2, b.Edges)
 
 
+# Session 30: shapes none of the above covers, each a common kind of part.
+
+
+
+def spring():  # a circle swept along a helix: a twisted B-spline tube, no face flat
+    helix = Part.Wire(Part.makeHelix(4, 40, 10))
+    return helix.makePipeShell([Part.Wire(Part.makeCircle(1, V(10, 0, 0), V(0, 1, 0)))], True, True)
+
+
+def ribbed_housing():  # an open box with 1.2 mm ribs and screw bosses: thin walls, many coplanar faces
+    b = Part.makeBox(120, 80, 40).cut(Part.makeBox(116, 76, 38, V(2, 2, 2)))
+    for i in range(1, 6):
+        b = b.fuse(Part.makeBox(1.2, 76, 30, V(20 * i, 2, 2)))
+    for i in range(3):
+        b = b.fuse(Part.makeCylinder(4, 36, V(10 + 50 * i, 10, 2))).cut(Part.makeCylinder(1.5, 36, V(10 + 50 * i, 10, 4)))
+    return b.removeSplitter()
+
+
+def knurled_knob():  # 40 grooves cut at 45 degrees round a cylinder, a shaft on top
+    k = Part.makeCylinder(15, 12)
+    for i in range(40):
+        a = 2 * math.pi * i / 40
+        corner = V(15 * math.cos(a), 15 * math.sin(a), 0)
+        k = k.cut(Part.makeBox(1, 1, 14, corner + V(0, 0, -1)).rotated(corner, V(0, 0, 1), math.degrees(a) + 45))
+    return k.fuse(Part.makeCylinder(5, 20, V(0, 0, 12)))
+
+
+def twisted_loft():  # a rectangle lofted through six sections, each turned 15 degrees: ruled, not flat
+    sections = []
+    for i in range(6):
+        w = Part.makePolygon([V(-10, -5, 0), V(10, -5, 0), V(10, 5, 0), V(-10, 5, 0), V(-10, -5, 0)])
+        w.rotate(V(0, 0, 0), V(0, 0, 1), 15 * i)
+        w.translate(V(0, 0, 10 * i))
+        sections.append(w)
+    return Part.makeLoft(sections, True, False)
+
+
+def far_bracket():  # a filleted, drilled bracket placed at an angle 8 m from the origin, as in an assembly
+    b = Part.makeBox(50, 30, 5).fuse(Part.makeBox(5, 30, 40))
+    b = b.makeFillet(2, [e for e in b.Edges if abs(e.Length - 30) < 1e-6][:2])
+    b = b.cut(Part.makeCylinder(3, 10, V(25, 15, -1)))
+    b.rotate(V(0, 0, 0), V(0.2, 0.9, 0.4), 37)
+    b.translate(V(-8123.25, 4410.5, 1200.125))
+    return b
+
+
 PARTS = {"sheet": sheet, "shaft": shaft, "sphere_with_holes": sphere_with_holes, "chamfered_block": chamfered_block,
          "ring_torus": ring_torus, "loft": loft, "offset_plate": offset_plate, "bolt": bolt, "elbow": elbow,
          "bearing_ring": bearing_ring, "frustum": frustum, "boss_plate": boss_plate, "knob": knob,
-         "cube_void": cube_void, "enclosure": enclosure, "tiny_fillet": tiny_fillet}
+         "cube_void": cube_void, "enclosure": enclosure, "tiny_fillet": tiny_fillet,
+         "perforated_tube": perforated_tube, "oblique_cylinders": oblique_cylinders, "spring": spring,
+         "ribbed_housing": ribbed_housing, "knurled_knob": knurled_knob, "twisted_loft": twisted_loft,
+         "far_bracket": far_bracket}
 TILTED = {"sheet", "bolt", "frustum", "boss_plate"}  # also placed at an angle (standard deflection)
+FINE_ONLY = {"perforated_tube", "oblique_cylinders"}  # their standard exports are in tests/data/cad
 
 
 def main(out_dir):
     os.makedirs(out_dir, exist_ok=True)
     for name, make in PARTS.items():
         shape = make()
-        variants = [(label, shape, d) for label, d in DEFLECTIONS.items()]
+        variants = [(label, shape, d) for label, d in DEFLECTIONS.items() if name not in FINE_ONLY or label == "fine"]
         if name in TILTED:
             tilted = shape.copy()
             tilted.rotate(V(0, 0, 0), *TILT)
