@@ -99,8 +99,9 @@ class EditableCdt {
   uint64_t plans_redone() const;
   // Deletions so far (remove_vertex, commit_removal, try_commit_removal) refused before their cavity
   // was built, while unbending: a Steiner point whose two pieces of a segment would merge into one
-  // that is not Delaunay among the vertices of its star, or one rounded off its segment whose star
-  // is too large to unbend (for tests and measurements).
+  // that is not Delaunay among the vertices of its star (guessed off its segment or in bent pieces:
+  // guess_blocked_refusals), or one rounded off its segment whose star is too large to unbend (for
+  // tests and measurements).
   uint64_t refused_early() const;
 
   // Steiner points of cdt() (Options::steiner) that rounding put a few ulps off their segment or
@@ -115,6 +116,14 @@ class EditableCdt {
   // from deleted neighbours costs many times a point's own (cdt()'s deletion pass uses 32:
   // core/src/edit/remove_steiner.h).
   void unbend_facets_at_steiner_points(std::size_t largest_star);
+  // While unbending, a Steiner point exactly on its segment, its facets' pieces around it flat, is
+  // refused before its cavity is built (NoCdtError) when the segment its deletion would leave is not
+  // Delaunay among the vertices of its star: proven, the star CDT would find no CDT either. With this
+  // on (off by default), so is a point rounded off its segment or in bent pieces with that segment
+  // blocked alike (VertexRemovalError), where the test proves nothing but nearly always agrees with
+  // the star CDT: a point refused wrongly stays, as one Steiner point more, and the CDT is still
+  // checked exactly. cdt()'s deletion pass turns it on (core/src/edit/remove_steiner.h).
+  void guess_blocked_refusals(bool on);
 
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)

@@ -33,6 +33,10 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
   const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
   EditableCdt<3> mesh(std::move(plc), std::move(tri));
   mesh.unbend_facets_at_steiner_points(kLargestBentStar);  // plc's tags name input facets (cdt.cpp)
+  // A point rounded off its segment (double coordinates) whose merged segment is blocked by its
+  // star's vertices is refused without its star CDT, which nearly always refuses it too: a wrong
+  // guess keeps one point more, the CDT is still checked (EditableCdt::guess_blocked_refusals).
+  mesh.guess_blocked_refusals(true);
   // Per Steiner point: how many points made from it are still there; it is tried only at 0.
   std::vector<uint32_t> children(end - first, 0);
   for (const auto& pair : made_from)
