@@ -126,10 +126,8 @@ def tiny_fillet():  # 0.2 mm fillets on a 200 mm block
     return b.makeFillet(0.2, b.Edges)
 
 
-# Session 30: shapes none of the above covers, each a common kind of part.
-
-
-
+# Session 30: shapes none of the above covers, each a common kind of part (the perforated tube and
+# the oblique rods are made by tests/data/cad/make_cad_parts.py, their standard exports committed).
 def spring():  # a circle swept along a helix: a twisted B-spline tube, no face flat
     helix = Part.Wire(Part.makeHelix(4, 40, 10))
     return helix.makePipeShell([Part.Wire(Part.makeCircle(1, V(10, 0, 0), V(0, 1, 0)))], True, True)
