@@ -110,7 +110,8 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
         continue;
       }
       // Refused when the PLC without v has no CDT (v is needed), or v is a junction of several
-      // facets (pieces of one input facet around it are one sheet, bent by rounding or not).
+      // facets (pieces of one input facet around it are one sheet, bent by rounding or not), or v
+      // lies off its segment and the segment it would leave is blocked (the guess above).
       if (mesh.try_commit_removal(std::move(removal), neighbours, &witness)) {
         ++count.removed;
         for (uint32_t parent : made_from[v - first])
