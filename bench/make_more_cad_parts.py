@@ -3,7 +3,8 @@ do not cover, modelled with FreeCAD's Part workbench and exported as a FreeCAD u
 (MeshPart, the same "standard" and "fine" deflections as tests/data/cad/make_cad_parts.py), binary
 STL. Session 14 found two parts here that failed by default (sphere_with_holes_fine: the round
 limit; the hollow sphere is committed as tests/data/cad/hollow_sphere_*.ply). Not committed (about
-20 MB); made in a few seconds whenever the bench runs.
+20 MB); made in about a minute whenever the bench runs. Session 30's fine perforated tube is the
+slow one to mesh: about 160 s for sweepcdt, 40 s for `tetgen -pQ`.
 
 Run with Debian's FreeCAD (freecad-python3):
     /usr/bin/python3 bench/make_more_cad_parts.py OUT_DIR

@@ -85,7 +85,8 @@ void compare(const Plc<3>& plc, const std::string& name) {
 
 // CAD parts as FreeCAD users export them (tests/data/cad, made by make_cad_parts.py: plates with
 // holes, flanges, gears, fillets, a pipe tee, a rotated box with an oblique hole, at FreeCAD's
-// standard and fine deflection), with the converter's defaults (mesh_defaults(): coplanar facets):
+// standard and fine deflection; a perforated thin-walled tube and two rods fused at an angle at
+// standard deflection), with the converter's defaults (mesh_defaults(): coplanar facets):
 // every one gets a validated CDT; Steiner points next to `tetgen -p`'s (which merges coplanar
 // facets too). pipe_tee_fine's STL stores CAD noise (z = -2.7e-15 for 0), so some Steiner points
 // cannot lie exactly on their segments and fold its long thin triangles (refine.h).
