@@ -1,7 +1,8 @@
 // TupleMap<N>: a flat open-addressing hash map from sorted vertex-id tuples (faces, ridges) to
 // uint32_t, for the sweep's dictionaries (paper §3: "best implemented as a hash table"). Linear
-// probing, power-of-two capacity kept at most half full, no erase (the sweep never removes faces).
-// No per-entry allocation, unlike std::unordered_map.
+// probing, power-of-two capacity kept at most half full; erase() shifts the entries after a removed
+// one back (no tombstones: the sweep never erases, EditableCdt's constraint map does at each
+// deletion). No per-entry allocation, unlike std::unordered_map.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -39,6 +40,30 @@ class TupleMap {
       }
       if (same_tuple(keys_[i], key)) return {values_[i], false};
     }
+  }
+
+  bool contains(const Key& key) const { return find(key) != kAbsent; }
+
+  // Removes key (if present): the entries of its probe run that hashed at or before its slot move
+  // back into the gap, so every probe run stays unbroken.
+  bool erase(const Key& key) {
+    std::size_t gap = slot(key);
+    for (;; gap = (gap + 1) & mask_) {
+      if (values_[gap] == kAbsent) return false;
+      if (same_tuple(keys_[gap], key)) break;
+    }
+    for (std::size_t j = (gap + 1) & mask_; values_[j] != kAbsent; j = (j + 1) & mask_) {
+      const std::size_t home = slot(keys_[j]);
+      // The entry at j stays when its home lies cyclically in (gap, j]: probing from there never passes the gap.
+      const bool stays = gap < j ? (gap < home && home <= j) : (gap < home || home <= j);
+      if (stays) continue;
+      keys_[gap] = keys_[j];
+      values_[gap] = values_[j];
+      gap = j;
+    }
+    values_[gap] = kAbsent;
+    --size_;
+    return true;
   }
 
   std::size_t size() const { return size_; }

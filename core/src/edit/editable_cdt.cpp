@@ -19,6 +19,7 @@
 #include "../ids_text.h"
 #include "../segment_interior.h"
 #include "../sweep/sweep_cdt.h"
+#include "../tuple_map.h"
 #include "blocked_segment.h"
 #include "sheets.h"
 #include "sorted_keys.h"
@@ -59,7 +60,7 @@ struct EditableCdt<D>::Impl {
   bool guess_blocked_refusals = false;  // EditableCdt::guess_blocked_refusals()
   std::vector<char> constraint_alive;
   std::vector<std::vector<uint32_t>> constraints_at;  // per vertex, the live ones
-  std::unordered_map<Key, uint32_t, TupleHash> constraint_of;
+  detail::TupleMap<D> constraint_of;  // sorted facet -> its live constraint
   std::vector<RegionSeed<D>> region_seeds;
 
   // --- plans (EditableCdt::plan_removal) ---
@@ -108,7 +109,8 @@ struct EditableCdt<D>::Impl {
   Impl(Plc<D> plc, Triangulation<D> tri)
       : points(std::move(tri.points)), num_input_points(tri.num_input_points), steiner_on(std::move(tri.steiner_on)),
         rank(std::move(tri.perturbation_rank)), simplices(std::move(tri.simplices)), neighbors(std::move(tri.neighbors)),
-        regions(std::move(tri.regions)), live_simplices(simplices.size() / (D + 1)), region_seeds(std::move(plc.region_seeds)) {
+        regions(std::move(tri.regions)), live_simplices(simplices.size() / (D + 1)), constraint_of(plc.num_simplices()),
+        region_seeds(std::move(plc.region_seeds)) {
     const std::size_t n = points.size() / D;
     alive.assign(n, 0);
     simplex_at.assign(n, kNone);
@@ -408,7 +410,7 @@ struct EditableCdt<D>::Impl {
     bool on_hull = false;
     for (uint32_t t : star)
       for (int i = 0; i <= D; ++i)
-        if (simplex(t)[i] != v && neighbors[std::size_t{t} * (D + 1) + i] == kNone && !constraint_of.count(sorted(facet(t, i))))
+        if (simplex(t)[i] != v && neighbors[std::size_t{t} * (D + 1) + i] == kNone && !constraint_of.contains(sorted(facet(t, i))))
           on_hull = true;
 
     p.read_beyond = on_hull;
@@ -616,7 +618,7 @@ struct EditableCdt<D>::Impl {
       for (int i = 0; i <= D; ++i) {
         const Key f = facet_of(fill, t, i);
         covered[sorted(f)] = true;
-        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && !link_of.count(sorted(f)) && !constraint_of.count(sorted(f)))
+        if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone && !link_of.count(sorted(f)) && !constraint_of.contains(sorted(f)))
           hull.push_back({f, fill.simplex(t)[i]});
       }
     for (const LinkFace& f : link)
@@ -749,7 +751,7 @@ struct EditableCdt<D>::Impl {
       if (wiring.link_face[k] != kNone) inner_of[wiring.link_face[k]] = static_cast<uint32_t>(k / (D + 1));
     for (uint32_t j = 0; j < link.size(); ++j) {
       const LinkFace& face = link[j];
-      if (face.across == kNone || constraint_of.count(face.key)) continue;
+      if (face.across == kNone || constraint_of.contains(face.key)) continue;
       const uint32_t apex = simplex(face.across / (D + 1))[face.across % (D + 1)];
       const uint32_t t = inner_of[j];
       if (t == kNone) continue;  // no new simplex there: a hull face now (v was on the hull)
@@ -811,7 +813,7 @@ struct EditableCdt<D>::Impl {
         const uint32_t inner = fill.neighbors[std::size_t{t} * (D + 1) + i];
         if (inner == kNone || known[inner / (D + 1)]) continue;
         const Key f = sorted(facet_of(fill, t, i));
-        if (constraint_of.count(f) || std::binary_search(new_constraints.begin(), new_constraints.end(), f)) continue;
+        if (constraint_of.contains(f) || std::binary_search(new_constraints.begin(), new_constraints.end(), f)) continue;
         known[inner / (D + 1)] = 1;
         w.region[inner / (D + 1)] = w.region[t];
         queue.push_back(inner / (D + 1));
