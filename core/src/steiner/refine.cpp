@@ -615,7 +615,11 @@ class Refiner {
     points_.insert(points_.end(), x, x + 3);
     on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
     parameter_.push_back(along_segment ? t : 0.0);
-    r_.steiner_on.push_back(kNone);  // set by split_triangles from a triangle holding the segment
+    // On an input segment: the first input triangle with that edge, which holds every point of it
+    // (a triangle holding the piece may not: facet flips move triangles across the input triangles
+    // of a coplanar facet). A fold's point lies inside a facet: split_triangles names the input
+    // triangle of the first triangle holding the fold.
+    r_.steiner_on.push_back(segment[0] == kNone ? kNone : first_input_triangle_with(segment[0], segment[1]));
     r_.made_from.push_back(ends);
     remove_segment(key);
     add_segment(edge_key(a, m));
@@ -626,6 +630,13 @@ class Refiner {
       fold_segments_.insert(edge_key(m, b));
     }
     return m;
+  }
+
+  uint32_t first_input_triangle_with(uint32_t u, uint32_t v) {
+    if (input_edge_triangle_.empty())
+      for (uint32_t j = static_cast<uint32_t>(groups_.triangles.size()); j-- > 0;)  // the first one last: it stays
+        for (int i = 0; i < 3; ++i) input_edge_triangle_[edge_key(groups_.triangles[j][i], groups_.triangles[j][(i + 1) % 3])] = j;
+    return input_edge_triangle_.at(edge_key(u, v));
   }
 
   // A parameter near t, strictly inside (ta, tb), at which the point u + t (v - u) of a segment whose
@@ -723,6 +734,7 @@ class Refiner {
   bool more_required_ = false;            // run_again(): look at every segment again
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at (splits())
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
+  std::unordered_map<uint64_t, uint32_t> input_edge_triangle_;  // input edge -> its first input triangle
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
 };
