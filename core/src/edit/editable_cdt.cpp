@@ -13,7 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "../facet_hash.h"
 #include "../ids_text.h"
@@ -21,6 +20,7 @@
 #include "../sweep/sweep_cdt.h"
 #include "../tuple_map.h"
 #include "blocked_segment.h"
+#include "id_set.h"
 #include "sheets.h"
 #include "sorted_keys.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -172,21 +172,14 @@ struct EditableCdt<D>::Impl {
   // --- the star of v -----------------------------------------------------------------------------
   std::vector<uint32_t> star_of(uint32_t v) const {
     std::vector<uint32_t> star{simplex_at[v]};
-    // Stars are small (20 simplices on CAD parts): looking through them beats a hash set, which
-    // allocated a node for each; a large star gets the set.
-    constexpr std::size_t kScanned = 64;
-    std::unordered_set<uint32_t> seen;
-    const auto fresh = [&](uint32_t t) {
-      if (star.size() < kScanned) return std::find(star.begin(), star.end(), t) == star.end();
-      if (seen.empty()) seen.insert(star.begin(), star.end());
-      return seen.insert(t).second;
-    };
+    detail::IdSet seen;
+    seen.insert(star[0]);
     for (std::size_t k = 0; k < star.size(); ++k) {
       const uint32_t t = star[k];
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
         if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
-        if (fresh(across / (D + 1))) star.push_back(across / (D + 1));
+        if (seen.insert(across / (D + 1))) star.push_back(across / (D + 1));
       }
     }
     return star;
@@ -271,13 +264,13 @@ struct EditableCdt<D>::Impl {
       if (!on_segment && star.size() > unbend_largest_star) return std::make_exception_ptr(VertexRemovalError(too_large_to_unbend(v, star.size())));
       const bool proves = on_segment && flat_pieces_at(v);
       if (!proves && !guess_blocked_refusals) return {};
+      // The star's other vertices, each once, as the star lists them (any order decides the same).
       std::vector<uint32_t> ids;
-      ids.reserve(D * star.size());
+      ids.reserve(star.size());
+      detail::IdSet seen(star.size());
       for (const uint32_t t : star)
         for (int i = 0; i <= D; ++i)
-          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b) ids.push_back(x);
-      std::sort(ids.begin(), ids.end());
-      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b && seen.insert(x)) ids.push_back(x);
       std::vector<predicates::Vertex> others;
       others.reserve(ids.size());
       for (const uint32_t x : ids) others.push_back({point(x), order(x)});
