@@ -78,6 +78,17 @@ void TrianglePieces::split(const std::unordered_map<uint64_t, uint32_t>& new_poi
   }
 }
 
+void TrianglePieces::changed(uint32_t slot, const Triangle& before) {
+  if (!split_since_ordered_) return;  // start() lists them from the triangles as they are then
+  for (const uint32_t v : before)
+    if (std::find(tris_[slot].begin(), tris_[slot].end(), v) == tris_[slot].end()) {
+      auto& list = incident_[v];
+      list.erase(std::find(list.begin(), list.end(), slot));
+    }
+  for (const uint32_t v : tris_[slot])
+    if (std::find(before.begin(), before.end(), v) == before.end()) incident_[v].push_back(slot);
+}
+
 void TrianglePieces::put_in_order() {
   if (!split_since_ordered_) return;
   std::vector<Triangle> tris;

@@ -33,6 +33,9 @@ class TrianglePieces {
   // The lists in order again (nothing to do when nothing was split since the last call).
   void put_in_order();
 
+  // Triangle `slot` was `before` and is now tris_[slot] (a facet's flips between splits).
+  void changed(uint32_t slot, const Triangle& before);
+
  private:
   void start(std::size_t num_points);  // the links and each point's triangles, once per ordering
 
