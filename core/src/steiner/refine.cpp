@@ -92,6 +92,7 @@ class Refiner {
     for (std::size_t t = 0; t < last.plc.simplices.size(); t += 3)
       tris_.push_back({last.plc.simplices[t], last.plc.simplices[t + 1], last.plc.simplices[t + 2]});
     unflipped_.assign(tris_.size(), 0);  // every facet flipped at the end of the last attempt
+    for (uint32_t m = r_.num_input_points; m < points_.size() / 3; ++m) points_off_segments_ += !exactly_on_its_segment(m);
     prepared_ = looked_ = true;
     pieces_of_segments();
   }
@@ -265,8 +266,10 @@ class Refiner {
       // rounding left in it when they are not Delaunay either (see folds_not_in).
       pieces_.put_in_order();
       flip_facets();
-      // Folds come from rounded Steiner points: without any, every facet is exactly flat.
-      if (r_.steiner_on.empty()) {
+      // Folds come from Steiner points off their segments (rounded) or inside facets: without any,
+      // every facet is exactly flat (on float surfaces nearly always: refine.h), and looking for
+      // folds, a map of every facet edge each round, was a sixth of perforated_tube_fine's refinement.
+      if (points_off_segments_ == 0) {
         r_.delaunay = delaunay.mesh();
         return;
       }
@@ -472,6 +475,7 @@ class Refiner {
       const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
       points_.insert(points_.end(), x, x + 3);
       on_segment_.push_back({kNone, kNone});
+      ++points_off_segments_;
       parameter_.push_back(0.0);
       r_.steiner_on.push_back(kNone);  // set by split_triangles, as for a segment's point
       r_.made_from.push_back({a, b});
@@ -629,6 +633,7 @@ class Refiner {
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
     on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
+    if (!exactly_on_its_segment(m)) ++points_off_segments_;
     parameter_.push_back(along_segment ? t : 0.0);
     // On an input segment: the first input triangle with that edge, which holds every point of it
     // (a triangle holding the piece may not: facet flips move triangles across the input triangles
@@ -748,6 +753,7 @@ class Refiner {
   bool looked_ = false;                   // the first round has looked at every segment
   bool more_required_ = false;            // run_again(): look at every segment again
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at (splits())
+  std::size_t points_off_segments_ = 0;  // Steiner points not exactly on their input segment, or inside a facet
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_map<uint64_t, uint32_t> input_edge_triangle_;  // input edge -> its first input triangle
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
