@@ -761,8 +761,7 @@ struct EditableCdt<D>::Impl {
   }
 
   // The plan's Wiring (above), from the new simplices (global ids, neighbours among themselves), the
-  // link and the sheets' new constraints. Reads only what a stale check covers: the constraints on
-  // the new simplices' inner facets lie inside the star, whose simplices any commit changing them changes.
+  // link and the sheets' new constraints.
   Wiring wire(const Triangulation<D>& fill, const std::vector<LinkFace>& link, const std::vector<NewConstraint>& added) const {
     Wiring w;
     detail::SortedKeys<Key> link_of;  // link face key -> its index in `link`
@@ -775,18 +774,23 @@ struct EditableCdt<D>::Impl {
       for (int i = 0; i <= D; ++i)
         if (fill.neighbors[std::size_t{t} * (D + 1) + i] == kNone)
           if (const uint32_t* j = link_of.find(sorted(facet_of(fill, t, i)))) w.link_face[std::size_t{t} * (D + 1) + i] = *j, covered[*j] = 1;
-    std::vector<uint32_t> in_fill = fill.simplices;
-    std::sort(in_fill.begin(), in_fill.end());
-    for (uint32_t j = 0; j < link.size(); ++j) {
-      if (link[j].across == kNone) continue;
-      if (!covered[j]) w.uncovered.push_back(j);
-      for (uint32_t x : link[j].key)
-        if (!std::binary_search(in_fill.begin(), in_fill.end(), x)) w.outside_only.push_back({x, j});
+    for (uint32_t j = 0; j < link.size(); ++j)
+      if (link[j].across != kNone && !covered[j]) w.uncovered.push_back(j);
+    // With every link face covered, each of its vertices is in a new simplex: no walk changes.
+    if (!w.uncovered.empty()) {
+      std::vector<uint32_t> in_fill = fill.simplices;
+      std::sort(in_fill.begin(), in_fill.end());
+      for (uint32_t j = 0; j < link.size(); ++j) {
+        if (link[j].across == kNone) continue;
+        for (uint32_t x : link[j].key)
+          if (!std::binary_search(in_fill.begin(), in_fill.end(), x)) w.outside_only.push_back({x, j});
+      }
     }
     if (regions.empty()) return w;
     // A new simplex on the link takes the region of the star simplex it replaced there (the last
     // such face's); the others take their neighbours' across facets that are no constraints once
-    // the deletion is applied: the sheets' new ones, or those there already (none of them has v).
+    // the deletion is applied. A facet between two new simplices lies inside the star, where every
+    // face of the mesh has v: it is a constraint only as one of the sheets' new ones.
     w.region.assign(n, kRegionAsItIs);
     std::vector<uint32_t> queue;
     for (uint32_t t = 0; t < n; ++t) {
@@ -805,8 +809,8 @@ struct EditableCdt<D>::Impl {
       for (int i = 0; i <= D; ++i) {
         const uint32_t inner = fill.neighbors[std::size_t{t} * (D + 1) + i];
         if (inner == kNone || known[inner / (D + 1)]) continue;
-        const Key f = sorted(facet_of(fill, t, i));
-        if (constraint_of.contains(f) || std::binary_search(new_constraints.begin(), new_constraints.end(), f)) continue;
+        if (!new_constraints.empty() && std::binary_search(new_constraints.begin(), new_constraints.end(), sorted(facet_of(fill, t, i))))
+          continue;
         known[inner / (D + 1)] = 1;
         w.region[inner / (D + 1)] = w.region[t];
         queue.push_back(inner / (D + 1));
