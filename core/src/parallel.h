@@ -101,7 +101,12 @@ class WorkerPool {
   // helpers after its own share of the jobs; it must not throw either. (The cavity sweep reports
   // progress there: progress is reported on the caller's thread only, and a caller that cancels
   // must be heard while a helper sweeps a large cavity.)
-  void run(std::size_t n, const std::function<void(std::size_t)>& job, const std::function<void()>& while_waiting = {}) {
+  //
+  // `extra`, if given, is called on this thread, once its share is done, again and again while a
+  // helper is still busy, until it returns false: work that may be done meanwhile or not at all
+  // (the deletion pass plans further deletions there instead of waiting for the batch's last one).
+  void run(std::size_t n, const std::function<void(std::size_t)>& job, const std::function<void()>& while_waiting = {},
+           const std::function<bool()>& extra = {}) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       job_ = &job;
@@ -113,6 +118,9 @@ class WorkerPool {
     }
     wake_.notify_all();
     take_jobs();
+    if (extra)
+      while (busy_.load() != 0 && extra()) {
+      }
     // The jobs are a fraction of a millisecond: spin a little before sleeping on the condition.
     for (int spin = 0; spin < kSpins && busy_.load() != 0; ++spin) std::this_thread::yield();
     std::unique_lock<std::mutex> lock(mutex_);

@@ -83,6 +83,9 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
   if (threads > 1) pool.emplace(threads - 1);
   // Enough plans to keep the threads busy, few enough that few go stale; one thread plans one.
   const std::size_t batch = threads > 1 ? 4 * std::size_t{threads} : 1;
+  // While the helpers finish the batch's last plans, this thread plans the next ones on the list
+  // (reading the mesh, as they do); those still current when their turn comes are not made again.
+  const std::size_t lookahead = threads > 1 ? batch : 0;
   std::deque<EditableCdt<3>::Removal> plans;  // plans[i] for work[i]
   std::vector<std::size_t> to_plan;
   std::vector<uint32_t> neighbours, witness;
@@ -90,12 +93,21 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
   SteinerDeletions count;
   while (!work.empty()) {
     const std::size_t n = std::min(batch, work.size());
-    while (plans.size() < n) plans.emplace_back();
+    // Sized before the threads start: a plan is written in place, and the deque does not grow meanwhile.
+    while (plans.size() < std::min(n + lookahead, work.size())) plans.emplace_back();
     to_plan.clear();
     for (std::size_t i = 0; i < n; ++i)
       if (refused_by[work[i] - first].empty() && !mesh.plan_is_current(plans[i])) to_plan.push_back(i);
     if (pool && to_plan.size() > 1) {
-      pool->run(to_plan.size(), plan);
+      std::size_t next = n;
+      const std::function<bool()> plan_ahead = [&] {
+        while (next < plans.size() && (!refused_by[work[next] - first].empty() || mesh.plan_is_current(plans[next]))) ++next;
+        if (next == plans.size()) return false;
+        plans[next] = mesh.plan_removal(work[next]);
+        ++next;
+        return true;
+      };
+      pool->run(to_plan.size(), plan, {}, plan_ahead);
     } else {
       for (std::size_t k = 0; k < to_plan.size(); ++k) plan(k);
     }
