@@ -237,7 +237,9 @@ class Refiner {
   // pass after pass is fanned from its two far corners, and Lawson's flips from such fans to the
   // facet's CDT number the square of its points (28.9M flips for 817k points on
   // perforated_tube_fine.stl), where flipping after each pass that halves its pieces keeps it
-  // near its CDT (1.7M; the CDT is the same, unique under the perturbation, so are the points).
+  // near its CDT (1.7M). An exactly flat facet's CDT is unique under the perturbation, so its
+  // triangles and the points are the same either way; on facets bent by rounding (double
+  // coordinates) the flips may end at another diagonal, and the counts differ slightly.
   // A pass of a few points (a cascade along a band) leaves its flips to the round's end, as
   // before: flipping costs a look at every triangle of the changed facets.
   void split_until_delaunay() {
@@ -268,7 +270,7 @@ class Refiner {
       flip_facets();
       // Folds come from Steiner points off their segments (rounded) or inside facets: without any,
       // every facet is exactly flat (on float surfaces nearly always: refine.h), and looking for
-      // folds, a map of every facet edge each round, was a sixth of perforated_tube_fine's refinement.
+      // folds, a map of every facet edge each round, was a tenth of perforated_tube_fine's refinement.
       if (points_off_segments_ == 0) {
         r_.delaunay = delaunay.mesh();
         return;
