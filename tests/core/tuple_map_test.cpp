@@ -1,14 +1,11 @@
 // TupleMap (core/src/tuple_map.h): the flat hash map of faces. Its oracle is std::unordered_map,
 // driven through the same random emplace/erase/find sequence. Keys come from a small range, so probe
 // runs are long, wrap around the table's end and get holes shifted back into them by erase().
-// IdSet (core/src/edit/id_set.h), the vertex deletion's flat set of ids, against std::unordered_set.
 #include <gtest/gtest.h>
 
 #include <random>
 #include <unordered_map>
-#include <unordered_set>
 
-#include "edit/id_set.h"
 #include "facet_hash.h"
 #include "tuple_map.h"
 
@@ -65,6 +62,7 @@ TEST(TupleMap, EmplaceEraseFindAsUnorderedMap) {
   run_against_unordered_map<3>(40, 20000, 2);    // sparse
   run_against_unordered_map<2>(4, 5000, 3);      // 16 keys in a 16- or 32-slot table: runs wrap around
   run_against_unordered_map<4>(5, 20000, 4);
+  run_against_unordered_map<1>(300, 20000, 5);  // single ids: EditableCdt's sets of a star's simplices and vertices
 }
 
 TEST(TupleMap, EraseKeepsEveryProbeRunWhole) {
@@ -88,19 +86,5 @@ TEST(TupleMap, EraseKeepsEveryProbeRunWhole) {
       for (uint32_t i = 0; i < keys.size(); ++i) ASSERT_EQ(map.find(keys[i]), gone[i] ? detail::TupleMap<3>::kAbsent : i);
     }
     ASSERT_EQ(map.size(), 0u);
-  }
-}
-
-TEST(IdSet, InsertAsUnorderedSet) {
-  std::mt19937 rng(11);
-  for (const uint32_t range : {40u, 1000u, 1u << 30}) {  // repeats, a few grows, and ids far apart
-    detail::IdSet set(4);
-    std::unordered_set<uint32_t> oracle;
-    for (int step = 0; step < 5000; ++step) {
-      const uint32_t id = rng() % range;
-      ASSERT_EQ(set.insert(id), oracle.insert(id).second) << "id " << id << ", step " << step;
-      ASSERT_EQ(set.size(), oracle.size());
-    }
-    for (const uint32_t id : oracle) ASSERT_FALSE(set.insert(id));  // every one still there after the grows
   }
 }

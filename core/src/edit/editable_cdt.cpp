@@ -20,7 +20,6 @@
 #include "../sweep/sweep_cdt.h"
 #include "../tuple_map.h"
 #include "blocked_segment.h"
-#include "id_set.h"
 #include "sheets.h"
 #include "sorted_keys.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -172,14 +171,14 @@ struct EditableCdt<D>::Impl {
   // --- the star of v -----------------------------------------------------------------------------
   std::vector<uint32_t> star_of(uint32_t v) const {
     std::vector<uint32_t> star{simplex_at[v]};
-    detail::IdSet seen;
-    seen.insert(star[0]);
+    detail::TupleMap<1> seen;  // flat: stars of hundreds of simplices on thin walls
+    seen.emplace({star[0]}, 0);
     for (std::size_t k = 0; k < star.size(); ++k) {
       const uint32_t t = star[k];
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
         if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
-        if (seen.insert(across / (D + 1))) star.push_back(across / (D + 1));
+        if (seen.emplace({across / (D + 1)}, 0).second) star.push_back(across / (D + 1));
       }
     }
     return star;
@@ -267,10 +266,10 @@ struct EditableCdt<D>::Impl {
       // The star's other vertices, each once, as the star lists them (any order decides the same).
       std::vector<uint32_t> ids;
       ids.reserve(star.size());
-      detail::IdSet seen(star.size());
+      detail::TupleMap<1> seen(star.size());
       for (const uint32_t t : star)
         for (int i = 0; i <= D; ++i)
-          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b && seen.insert(x)) ids.push_back(x);
+          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b && seen.emplace({x}, 0).second) ids.push_back(x);
       std::vector<predicates::Vertex> others;
       others.reserve(ids.size());
       for (const uint32_t x : ids) others.push_back({point(x), order(x)});
