@@ -500,6 +500,37 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
   EXPECT_EQ(continued.on_segment, fresh.on_segment);
 }
 
+// Lazy refinement's first attempt with points (a refiner that starts from the input) splits only the
+// required segments: the segments its points break are left to the cavity sweep, which decides
+// whether they matter. On a sphere nested in another, tessellated alike (hollow_sphere_fine.ply's
+// shape), each split of a band's diagonal breaks the next one, and splitting those too ran round the
+// band: hollow_sphere_fine kept 14308 points that way, 7537 this way. Here every input edge that is
+// not Delaunay is required; no Steiner point may lie on another segment. (A refinement continued
+// with more segments required splits what its points break: the test above.)
+TEST(Steiner, AFirstRefinementSplitsOnlyTheRequiredSegments) {
+  Plc<3> hollow;
+  fixtures::add_uv_sphere(hollow, 2.0, 24, 48, true);
+  fixtures::add_uv_sphere(hollow, 1.0, 24, 48, false);
+  const std::set<std::array<uint32_t, 2>> edges = delaunay_edges(hollow.points);
+  detail::RequiredSegments required;
+  for (std::size_t t = 0; t < hollow.num_simplices(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = hollow.simplex(t)[i], b = hollow.simplex(t)[(i + 1) % 3];
+      if (!edges.count({std::min(a, b), std::max(a, b)})) required.insert(detail::edge_key(a, b));
+    }
+  ASSERT_FALSE(required.empty()) << "every input edge is Delaunay: nothing exercised";
+  const detail::RefinedPlc r = detail::refine(hollow, mesh_defaults(), &required, detail::Folds::LeftAsTheyAre);
+  ASSERT_GT(r.steiner_on.size(), 0u);
+  std::size_t elsewhere = 0;
+  for (const auto& [u, v] : r.on_segment) elsewhere += !required.count(detail::edge_key(u, v));
+  EXPECT_EQ(elsewhere, 0u) << "of " << r.steiner_on.size() << " Steiner points, on segments not required";
+  // The default command meshes it, with a CDT.
+  Plc<3> refined;
+  const Triangulation<3> tri = cdt(hollow, mesh_defaults(), &refined);
+  EXPECT_GT(tri.num_points(), hollow.num_points());
+  EXPECT_TRUE(validate_triangulated(tri, refined).ok());
+}
+
 // An importer checks a surface with find_problems_before_cdt(): given a second thread, the Delaunay
 // tetrahedralization of its points is computed there and kept in the check's record, and cdt() takes
 // it (once) instead of computing it after the check. The problems and the record are those of

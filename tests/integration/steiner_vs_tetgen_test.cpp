@@ -240,7 +240,8 @@ TEST(SteinerDeletion, JitteredScansKeepFewPointsAndPassCheck) {
 // is made from its input edge's ends (float32 coordinates), so none is kept for another's sake (the
 // parent rule): each must be refused now, the retries the heuristic skipped included. Since session
 // 28 nearly every refusal there is found before the star CDT (blocked_segment.h), without a witness
-// (such a point is tried again whichever neighbour goes): 5252 of the 5272 refusals.
+// (such a point is tried again whichever neighbour goes): 5252 of the 5272 refusals then, all 2534
+// since session 32.
 TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   const Plc<3> plc = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "pipe_tee_std.stl");
   Options options = mesh_defaults();
@@ -248,11 +249,12 @@ TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   options.statistics = &stats;
   Plc<3> refined;
   const Triangulation<3> tri = cdt(plc, options, &refined);
-  // Refined lazily (float coordinates, cdt.cpp): 812 deleted of 3350 since session 20.
+  // Refined lazily (float coordinates, cdt.cpp): 812 deleted of 3350 from session 20, 245 of 2308
+  // since session 32 (the first attempt with points splits only the required segments).
   EXPECT_GE(stats.steiner_attempts, 2u);
-  ASSERT_GT(stats.steiner_points_removed, 500u);
+  ASSERT_GT(stats.steiner_points_removed, 200u);
   ASSERT_GT(stats.steiner_points, 1000u);
-  EXPECT_GT(stats.steiner_refused_early, 4000u);
+  EXPECT_GT(stats.steiner_refused_early, 2000u);
   EXPECT_GT(stats.steiner_deletions_tried, stats.steiner_points + stats.steiner_points_removed);
   EditableCdt<3> mesh(refined, tri);
   std::vector<uint32_t> neighbours;

@@ -170,6 +170,43 @@ inline void add_tetrahedron(Plc<3>& plc, std::array<uint32_t, 4> ids) {
   }
 }
 
+// Appends a latitude-longitude sphere about the origin, as CAD systems tessellate one: `rings` bands
+// of `sectors` quads each split by a diagonal, fans at the poles; coordinates rounded to float, as
+// STL stores them. `domain_inside`: the domain is inside it (else outside: a cavity). Each
+// triangle's exterior side comes from the orientation of the centre, exactly.
+inline void add_uv_sphere(Plc<3>& plc, double radius, int rings, int sectors, bool domain_inside) {
+  const uint32_t base = static_cast<uint32_t>(plc.num_points());
+  const double pi = std::acos(-1.0);
+  const auto add_point = [&](double x, double y, double z) {
+    for (const double c : {x, y, z}) plc.points.push_back(static_cast<float>(c));
+  };
+  add_point(0, 0, radius);  // base: the north pole
+  for (int i = 1; i < rings; ++i) {
+    const double polar = pi * i / rings;
+    for (int j = 0; j < sectors; ++j) {
+      const double azimuth = 2 * pi * j / sectors;
+      add_point(radius * std::sin(polar) * std::cos(azimuth), radius * std::sin(polar) * std::sin(azimuth), radius * std::cos(polar));
+    }
+  }
+  add_point(0, 0, -radius);  // the south pole
+  const uint32_t south = static_cast<uint32_t>(plc.num_points() - 1);
+  const auto at = [&](int ring, int j) { return base + 1 + static_cast<uint32_t>((ring - 1) * sectors + (j % sectors)); };
+  const double centre[3] = {0, 0, 0};
+  const auto add_triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+    plc.simplices.insert(plc.simplices.end(), {a, b, c});
+    const bool positive = predicates::orient<3>({plc.point(a), plc.point(b), plc.point(c), centre}) == predicates::Sign::Positive;
+    plc.exterior.push_back(positive == domain_inside ? ExteriorSide::Negative : ExteriorSide::Positive);
+  };
+  for (int j = 0; j < sectors; ++j) {
+    add_triangle(base, at(1, j), at(1, j + 1));
+    add_triangle(south, at(rings - 1, j + 1), at(rings - 1, j));
+    for (int i = 1; i + 1 < rings; ++i) {
+      add_triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      add_triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+}
+
 }  // namespace sweepcdt::fixtures
 
 namespace sweepcdt::fixtures {

@@ -43,9 +43,9 @@
 // So at the end every ridge — segment or fold — is Delaunay, and the theorem's premise holds
 // exactly for the refined PLC as computed; cdt() triangulates it with the sweep and validates it.
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
-// segments, and of the segments that were Delaunay when first looked at but are not after the
-// points made for the required ones; the rest stay as they are, and the cavity sweep decides
-// exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp: the first refinements, for
+// segments, and, from its second attempt with points on (Refinement), of the segments that were
+// Delaunay until that attempt's points broke them; the rest stay as they are, and the cavity sweep
+// decides exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp: the first refinements, for
 // every algorithm) likewise stops once the segments are Delaunay and the facets flipped: the folds
 // that are still not Delaunay get no points, and the algorithm decides whether the CDT needs them.
 #pragma once
