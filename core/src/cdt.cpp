@@ -179,8 +179,9 @@ std::optional<Triangulation<3>> sweep_cavities(const detail::RefinedPlc& refined
 // encroaches on a segment from outside the domain, or across a face flat up to rounding, often leaves
 // the CDT intact. So the refinement first requires no segment at all, and the cavity sweep
 // (cavity/cavity_cdt.h) tries the PLC as it is; the input segments of the cavities that find no CDT
-// are required from then on, and the refinement goes on with them (splitting, too, any segment
-// that its points make not Delaunay where it was: steiner/refine.cpp). A cavity without a CDT has a
+// are required from then on, and the refinement goes on with them (from the second attempt with
+// points on splitting, too, any segment that its points make not Delaunay where it was; the first
+// leaves those to the cavity sweep: steiner/refine.cpp, Refiner::splits). A cavity without a CDT has a
 // segment that is not Delaunay (the theorem, applied to the cavity's PLC: every other ridge of it is
 // an edge of the Delaunay triangulation), or a fold that is not (folds are left as they are here:
 // refine_every_segment says why; float points rarely make any), so each attempt requires segments
