@@ -510,7 +510,8 @@ TEST(Steiner, ARefinementContinuedWithMoreSegmentsRequiredKeepsEveryRequiredPiec
 TEST(Steiner, AFirstRefinementSplitsOnlyTheRequiredSegments) {
   Plc<3> hollow;
   fixtures::add_uv_sphere(hollow, 2.0, 24, 48, true);
-  fixtures::add_uv_sphere(hollow, 1.0, 24, 48, false);
+  fixtures::add_uv_sphere(hollow, 1.0, 24, 48, false);  // a cavity
+  for (double& x : hollow.points) x = static_cast<float>(x);  // as STL stores them
   const std::set<std::array<uint32_t, 2>> edges = delaunay_edges(hollow.points);
   detail::RequiredSegments required;
   for (std::size_t t = 0; t < hollow.num_simplices(); ++t)

@@ -181,27 +181,12 @@ Plc<3> jittered(Plc<3> plc, uint64_t seed) {
 // the ends; long thin triangles around it.
 Plc<3> vase(int around, int rings) {
   Plc<3> plc;
-  const auto add = [&](double x, double y, double z) {
-    plc.points.insert(plc.points.end(), {x, y, z});
-    return static_cast<uint32_t>(plc.num_points() - 1);
-  };
-  std::vector<std::vector<uint32_t>> ring(rings);
+  std::vector<std::array<double, 2>> profile;
   for (int k = 0; k < rings; ++k) {
-    const double z = 40.0 * k / (rings - 1), r = 15 + 5 * std::sin(z / 8);
-    for (int j = 0; j < around; ++j) ring[k].push_back(add(r * std::cos(2 * M_PI * j / around), r * std::sin(2 * M_PI * j / around), z));
+    const double z = 40.0 * k / (rings - 1);
+    profile.push_back({15 + 5 * std::sin(z / 8), z});
   }
-  const uint32_t bottom = add(0, 0, 0), top = add(0, 0, 40);
-  const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) { plc.simplices.insert(plc.simplices.end(), {a, b, c}); };
-  for (int j = 0; j < around; ++j) {
-    const int next = (j + 1) % around;
-    for (int k = 0; k + 1 < rings; ++k) {
-      triangle(ring[k][j], ring[k][next], ring[k + 1][next]);  // outward: around, then up
-      triangle(ring[k][j], ring[k + 1][next], ring[k + 1][j]);
-    }
-    triangle(bottom, ring[0][next], ring[0][j]);
-    triangle(top, ring[rings - 1][j], ring[rings - 1][next]);
-  }
-  plc.exterior.assign(plc.num_simplices(), ExteriorSide::Negative);  // counterclockwise seen from outside
+  fixtures::add_revolved(plc, profile, around, 0, 40);
   return plc;
 }
 

@@ -1,10 +1,12 @@
-// Small PLCs used across the tests, built by hand with exactly representable coordinates.
+// Small PLCs used across the tests, built by hand: most with exactly representable coordinates, the
+// surfaces of revolution (add_revolved) with rounded sines and cosines.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <numbers>
 #include <vector>
 
 #include "sweepcdt/plc.h"
@@ -170,41 +172,45 @@ inline void add_tetrahedron(Plc<3>& plc, std::array<uint32_t, 4> ids) {
   }
 }
 
-// Appends a latitude-longitude sphere about the origin, as CAD systems tessellate one: `rings` bands
-// of `sectors` quads each split by a diagonal, fans at the poles; coordinates rounded to float, as
-// STL stores them. `domain_inside`: the domain is inside it (else outside: a cavity). Each
-// triangle's exterior side comes from the orientation of the centre, exactly.
-inline void add_uv_sphere(Plc<3>& plc, double radius, int rings, int sectors, bool domain_inside) {
-  const uint32_t base = static_cast<uint32_t>(plc.num_points());
-  const double pi = std::acos(-1.0);
-  const auto add_point = [&](double x, double y, double z) {
-    for (const double c : {x, y, z}) plc.points.push_back(static_cast<float>(c));
+// Appends the surface of revolution about the z axis of a profile, as CAD systems tessellate one:
+// each (radius > 0, z) of `profile`, bottom to top, a ring of `around` points; quads between rings
+// split by a diagonal; fans to the axis at z_bottom and z_top. Counterclockwise seen from outside
+// (around, then up), exterior Negative; `outward` false reverses it (a cavity: the domain outside).
+inline void add_revolved(Plc<3>& plc, const std::vector<std::array<double, 2>>& profile, int around, double z_bottom, double z_top,
+                         bool outward = true) {
+  constexpr double pi = std::numbers::pi;
+  const auto add = [&](double x, double y, double z) {
+    plc.points.insert(plc.points.end(), {x, y, z});
+    return static_cast<uint32_t>(plc.num_points() - 1);
   };
-  add_point(0, 0, radius);  // base: the north pole
-  for (int i = 1; i < rings; ++i) {
-    const double polar = pi * i / rings;
-    for (int j = 0; j < sectors; ++j) {
-      const double azimuth = 2 * pi * j / sectors;
-      add_point(radius * std::sin(polar) * std::cos(azimuth), radius * std::sin(polar) * std::sin(azimuth), radius * std::cos(polar));
-    }
+  std::vector<std::vector<uint32_t>> ring(profile.size());
+  for (std::size_t k = 0; k < profile.size(); ++k) {
+    const auto [r, z] = profile[k];
+    for (int j = 0; j < around; ++j) ring[k].push_back(add(r * std::cos(2 * pi * j / around), r * std::sin(2 * pi * j / around), z));
   }
-  add_point(0, 0, -radius);  // the south pole
-  const uint32_t south = static_cast<uint32_t>(plc.num_points() - 1);
-  const auto at = [&](int ring, int j) { return base + 1 + static_cast<uint32_t>((ring - 1) * sectors + (j % sectors)); };
-  const double centre[3] = {0, 0, 0};
-  const auto add_triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+  const uint32_t bottom = add(0, 0, z_bottom), top = add(0, 0, z_top);
+  const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+    if (!outward) std::swap(b, c);
     plc.simplices.insert(plc.simplices.end(), {a, b, c});
-    const bool positive = predicates::orient<3>({plc.point(a), plc.point(b), plc.point(c), centre}) == predicates::Sign::Positive;
-    plc.exterior.push_back(positive == domain_inside ? ExteriorSide::Negative : ExteriorSide::Positive);
+    plc.exterior.push_back(ExteriorSide::Negative);
   };
-  for (int j = 0; j < sectors; ++j) {
-    add_triangle(base, at(1, j), at(1, j + 1));
-    add_triangle(south, at(rings - 1, j + 1), at(rings - 1, j));
-    for (int i = 1; i + 1 < rings; ++i) {
-      add_triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      add_triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+  for (int j = 0; j < around; ++j) {
+    const int next = (j + 1) % around;
+    for (std::size_t k = 0; k + 1 < profile.size(); ++k) {
+      triangle(ring[k][j], ring[k][next], ring[k + 1][next]);
+      triangle(ring[k][j], ring[k + 1][next], ring[k + 1][j]);
     }
+    triangle(bottom, ring[0][next], ring[0][j]);
+    triangle(top, ring.back()[j], ring.back()[next]);
   }
+}
+
+// A latitude-longitude sphere of `rings` bands about the origin (add_revolved).
+inline void add_uv_sphere(Plc<3>& plc, double radius, int rings, int around, bool outward) {
+  constexpr double pi = std::numbers::pi;
+  std::vector<std::array<double, 2>> profile;
+  for (int i = rings - 1; i >= 1; --i) profile.push_back({radius * std::sin(pi * i / rings), radius * std::cos(pi * i / rings)});
+  add_revolved(plc, profile, around, -radius, radius, outward);
 }
 
 }  // namespace sweepcdt::fixtures
