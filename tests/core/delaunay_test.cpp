@@ -392,6 +392,63 @@ TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
   }
 }
 
+// insert_new_points(near): each point's location starts at the point `near` names (refinement names
+// an end of the piece it splits), which changes the walk only: the same tetrahedra as from scratch,
+// whatever is named — an inserted point beside it, one far off, a point on the hull (its simplex may
+// be a ghost), one of the batch not inserted yet, the point itself, kNone. Random and grid points.
+TEST(Delaunay3, PointsLocatedFromANamedPointGiveTheSameTriangulation) {
+  std::vector<std::pair<std::string, std::vector<double>>> cases;
+  for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(200, 60 + seed));
+  for (uint64_t seed = 0; seed < 3; ++seed) {
+    std::mt19937_64 rng(700 + seed);
+    cases.emplace_back("grid " + std::to_string(seed), fixtures::distinct_grid_points<3>(rng, 160, 5));
+  }
+  for (const auto& [what, all] : cases) {
+    const uint32_t n = static_cast<uint32_t>(all.size() / 3);
+    for (int rule = 0; rule < 6; ++rule) {
+      std::vector<double> points(all.begin(), all.begin() + 3 * (n / 4));
+      detail::DelaunayEdges edges(points);
+      std::mt19937_64 rng(rule);
+      for (const uint32_t end : {n / 2, n / 2 + 3, n}) {
+        const uint32_t first = static_cast<uint32_t>(points.size() / 3);
+        points.insert(points.end(), all.begin() + points.size(), all.begin() + 3 * std::size_t{end});
+        const auto near = [&](uint32_t id) -> uint32_t {
+          switch (rule) {
+            case 0: {  // the inserted point nearest to it
+              uint32_t best = 0;
+              double least = 1e300;
+              for (uint32_t v = 0; v < first; ++v) {
+                double d = 0;
+                for (int k = 0; k < 3; ++k) d += (points[3 * v + k] - points[3 * id + k]) * (points[3 * v + k] - points[3 * id + k]);
+                if (d < least) least = d, best = v;
+              }
+              return best;
+            }
+            case 1: return static_cast<uint32_t>(rng() % first);  // anywhere
+            case 2: return 0;                                      // always the same one (on the hull, or not)
+            case 3: return end - 1;                                // of the batch: not inserted until last
+            case 4: return id;                                     // itself
+            default: return kNone;
+          }
+        };
+        edges.insert_new_points(near);
+        std::set<Tet> kept, fresh;
+        const detail::DelaunayMesh mesh = edges.mesh();
+        for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+          Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
+          std::sort(tet.begin(), tet.end());
+          kept.insert(tet);
+        }
+        for (Tet tet : detail::delaunay_simplices<3>(points)) {
+          std::sort(tet.begin(), tet.end());
+          fresh.insert(tet);
+        }
+        ASSERT_EQ(kept, fresh) << what << ", rule " << rule << ", " << end << " points";
+      }
+    }
+  }
+}
+
 // Not a timing assertion: prints both times for the report (bench/sweep_bench cube-points 33000).
 TEST(Delaunay3, Large33kAgainstSweep) {
   const std::vector<double> points = random_points(33000, 2024);

@@ -226,8 +226,9 @@ class Delaunay {
     return result;
   }
 
-  // Inserts the points with ids from vertex_simplex_.size() on (appended to the points since).
-  void insert_new_points() {
+  // Inserts the points with ids from vertex_simplex_.size() on (appended to the points since), each
+  // located from near(id) when that is an inserted point (DelaunayEdges::insert_new_points).
+  void insert_new_points(const std::function<uint32_t(uint32_t)>& near = {}) {
     const std::size_t first = vertex_simplex_.size(), n = points_->size() / D;
     if (n == first) return;  // nothing changed: keep what touched() says
     vertex_simplex_.resize(n, kInfinite);
@@ -237,7 +238,10 @@ class Delaunay {
     changed_.resize(n - first);
     std::iota(changed_.begin(), changed_.end(), static_cast<uint32_t>(first));
     const std::vector<double> added(points_->begin() + D * first, points_->end());
-    for (const uint32_t k : brio_order<D>(added)) insert(static_cast<uint32_t>(first + k));
+    for (const uint32_t k : brio_order<D>(added)) {
+      const uint32_t id = static_cast<uint32_t>(first + k);
+      insert(id, near ? near(id) : kInfinite);
+    }
   }
 
   // Whether a simplex at v was destroyed (or v was inserted) by the last build/insert_new_points:
@@ -424,12 +428,20 @@ class Delaunay {
   uint32_t neighbor(uint32_t t, int i) const { return cells_[t].n[i] >> kLinkBits; }
 
   // ------------------------------------------------------------------------------------------
-  // Point location: a remembering stochastic visibility walk (Devillers, Pion, Teillaud) from the
-  // last simplex made. It ends in a finite simplex whose closure holds p, or in a ghost whose hull
-  // facet p lies strictly outside of. Either one conflicts with p.
+  // Point location: a remembering stochastic visibility walk (Devillers, Pion, Teillaud) from a
+  // finite simplex at `near` when that is an inserted point, else from the last simplex made. It
+  // ends in a finite simplex whose closure holds p, or in a ghost whose hull facet p lies strictly
+  // outside of. Either one conflicts with p. (Steiner points come a batch at a time, spread over the
+  // surface, each beside an end of the piece it splits: walked to from the last simplex made, each
+  // took 38 steps on oblique_cylinders_fine.stl, from that end 14.5, and its refinement 0.81x the
+  // time, with the same triangulation.)
 
-  uint32_t locate(const Vertex& p) {
+  uint32_t locate(const Vertex& p, uint32_t near) {
     uint32_t t = last_;
+    if (near < vertex_simplex_.size() && vertex_simplex_[near] != kInfinite) {
+      t = vertex_simplex_[near];
+      if (const int k = infinite_index(t); k <= D) t = neighbor(t, k);  // a ghost's finite neighbour, across its hull facet
+    }
     int came_from = D + 1;  // p is known to be strictly on t's side of this facet
     const std::size_t max_steps = cells_.size() + 16;  // the walk is acyclic in a Delaunay triangulation
     for (std::size_t step = 0; step < max_steps; ++step) {
@@ -486,9 +498,9 @@ class Delaunay {
     uint32_t outside;  // the link to the simplex across the facet, not in conflict
   };
 
-  void insert(uint32_t id) {
+  void insert(uint32_t id, uint32_t near = kInfinite) {
     const Vertex p = vertex(id);
-    const uint32_t start = locate(p);
+    const uint32_t start = locate(p, near);
     if (infinite_index(start) == D + 1)
       for (const uint32_t v : cells_[start].v)
         if (same_point(v, id))
@@ -676,9 +688,9 @@ DelaunayEdges::~DelaunayEdges() = default;
 
 void DelaunayEdges::rebind(const std::vector<double>& points) { impl_->triangulation.rebind(points); }
 
-void DelaunayEdges::insert_new_points() {
+void DelaunayEdges::insert_new_points(const std::function<uint32_t(uint32_t)>& near) {
   check_points<3>(impl_->triangulation.points(), impl_->triangulation.num_inserted());
-  impl_->triangulation.insert_new_points();
+  impl_->triangulation.insert_new_points(near);
 }
 
 bool DelaunayEdges::has_edge(uint32_t a, uint32_t b) { return impl_->triangulation.has_edge(a, b); }

@@ -66,7 +66,9 @@ class DelaunayEdges {
   // that starts with its points (it must outlive this object).
   void rebind(const std::vector<double>& points);
   // Inserts the points appended to `points` since the last call (or the construction), if any.
-  void insert_new_points();
+  // `near(id)`, when given: a point near new point `id` (kNone, or one not inserted yet: none), where
+  // its location starts. The triangulation is the same either way; only the walk is shorter.
+  void insert_new_points(const std::function<uint32_t(uint32_t)>& near = {});
   // Whether ab is an edge of the triangulation (a and b inserted points).
   bool has_edge(uint32_t a, uint32_t b);
   // The vertices sharing a tetrahedron with a (with repeats).

@@ -258,7 +258,7 @@ class Refiner {
     DelaunayEdges& delaunay = first_delaunay();  // kept up to date as points are added
     for (;; ++r_.rounds) {
       pieces_.put_in_order();        // the last round's fold splits
-      delaunay.insert_new_points();  // the Steiner points of the last round
+      insert_new_points(delaunay);   // the Steiner points of the last round
       std::unordered_map<uint64_t, uint32_t> new_point;
       for (auto split = segments_not_in(delaunay); !split.empty(); split = changed_segments_not_in(delaunay)) {
         check_limits(split, 0);
@@ -266,7 +266,7 @@ class Refiner {
         for (uint64_t key : split) new_point.emplace(key, add_split_point(key, &delaunay));
         split_triangles(new_point);
         if (new_point.size() * kPointsPerFlippedPass >= tris_.size()) flip_facets();
-        delaunay.insert_new_points();
+        insert_new_points(delaunay);
         report_progress();
       }
       // The segments are Delaunay: give each facet its 2D CDT, then deal with the folds that
@@ -339,6 +339,15 @@ class Refiner {
                          "; long thin triangles on faces that are flat only approximately need that many" +
                          (options_.facets == FacetMode::Coplanar ? std::string() : " (faces that are exactly flat can be merged: --facets coplanar)"),
                      split.empty() ? std::vector<uint32_t>{} : std::vector<uint32_t>{static_cast<uint32_t>(split.front() >> 32), static_cast<uint32_t>(split.front())});
+  }
+
+  // The points added since the last call into `delaunay`, each located from the end of the piece
+  // or fold it splits (locate_from_), not from where the last one went in.
+  void insert_new_points(DelaunayEdges& delaunay) {
+    const std::size_t first = points_.size() / 3 - locate_from_.size();
+    delaunay.insert_new_points(
+        [&](uint32_t id) { return id >= first && id - first < locate_from_.size() ? locate_from_[id - first] : kNone; });
+    locate_from_.clear();
   }
 
   // Segments that are not Delaunay, each once, in triangle order (deterministic): a round's first
@@ -481,6 +490,7 @@ class Refiner {
       coordinates_.insert(key_of(x));
       const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
       points_.insert(points_.end(), x, x + 3);
+      locate_from_.push_back(a);
       on_segment_.push_back({kNone, kNone});
       ++points_off_segments_;
       parameter_.push_back(0.0);
@@ -639,6 +649,7 @@ class Refiner {
     coordinates_.insert(key_of(x));
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
+    locate_from_.push_back(a);
     on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
     if (!exactly_on_its_segment(m)) ++points_off_segments_;
     parameter_.push_back(along_segment ? t : 0.0);
@@ -759,6 +770,7 @@ class Refiner {
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
   bool looked_ = false;                   // the first round has looked at every segment
   bool more_required_ = false;            // run_again(): look at every segment again
+  std::vector<uint32_t> locate_from_;     // per point added since the tetrahedralization took the last ones: an end of what it split
   bool continues_ = false;                // made again from what an earlier refiner set aside (splits())
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
   std::size_t points_off_segments_ = 0;  // Steiner points not exactly on their input segment, or inside a facet
