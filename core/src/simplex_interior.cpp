@@ -10,7 +10,8 @@ namespace sweepcdt::detail {
 using predicates::Sign;
 
 template <int D>
-bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t) {
+bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t, int* outer_facet) {
+  if (outer_facet) *outer_facet = -1;
   // Quick answer first: t lies on the closed outer side of a facet hyperplane of s (the usual case).
   const Sign inner = predicates::orient<D>(s);  // s's own orientation: each vertex's side of its facet
   for (int facet = 0; facet <= D; ++facet) {
@@ -20,7 +21,10 @@ bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<
       plane[facet] = t[k];
       outside = predicates::orient<D>(plane) != inner;
     }
-    if (outside) return false;
+    if (outside) {
+      if (outer_facet) *outer_facet = facet;
+      return false;
+    }
   }
   // Each distinct point once, with its membership: a shared vertex (same pointer into the point
   // array) constrains the sides of both simplices.
@@ -63,9 +67,9 @@ bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<
   }
 }
 
-template bool interior_meets<2>(const std::array<const double*, 3>&, const std::array<const double*, 2>&);
-template bool interior_meets<3>(const std::array<const double*, 4>&, const std::array<const double*, 3>&);
-template bool interior_meets<4>(const std::array<const double*, 5>&, const std::array<const double*, 4>&);
-template bool interior_meets<5>(const std::array<const double*, 6>&, const std::array<const double*, 5>&);
+template bool interior_meets<2>(const std::array<const double*, 3>&, const std::array<const double*, 2>&, int*);
+template bool interior_meets<3>(const std::array<const double*, 4>&, const std::array<const double*, 3>&, int*);
+template bool interior_meets<4>(const std::array<const double*, 5>&, const std::array<const double*, 4>&, int*);
+template bool interior_meets<5>(const std::array<const double*, 6>&, const std::array<const double*, 5>&, int*);
 
 }  // namespace sweepcdt::detail

@@ -12,7 +12,10 @@
 
 namespace sweepcdt::detail {
 
+// `outer_facet`, when given, is set to i for the facet of s without vertex i whose hyperplane has t
+// on its closed outer side, when the answer came from such a facet (the quick answer, the usual
+// one), else to -1. Then t meets s only in that facet.
 template <int D>
-bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t);
+bool interior_meets(const std::array<const double*, D + 1>& s, const std::array<const double*, D>& t, int* outer_facet = nullptr);
 
 }  // namespace sweepcdt::detail

@@ -15,7 +15,9 @@
 #include "cavity/cavity_cdt.h"
 #include "cavity/disturbed.h"
 #include "delaunay/delaunay.h"
+#include "facets.h"
 #include "simplex_interior.h"
+#include "simplex_intersection.h"
 #include "integer_sphere.h"
 #include "random_plc.h"
 #include "sweepcdt/cdt.h"
@@ -189,6 +191,46 @@ TEST(CavitySweep, ConstraintsOverlappingDelaunayFacesInTheirPlaneDisturbThem) {
   EXPECT_EQ(detail::disturbed_simplices<3>(plc, dt, faces.missing, 1).tets, (std::vector<uint8_t>{1, 1, 1, 1}));
   EXPECT_THROW(run(plc, Algorithm::SweepSphere), NoCdtError);
   EXPECT_THROW(run(plc, Algorithm::CavitySweep), NoCdtError);
+}
+
+// disturbed_simplices against its definition, tetrahedron by tetrahedron: a tetrahedron is disturbed
+// when a missing constraint meets its interior or meets one of its facets other than in the face
+// their shared vertices span. The search looks only around each constraint and skips, without the
+// full test, a tetrahedron strictly on one side of the constraint's plane but for shared vertices;
+// a brute force over every pair checks both. Integer points in a 5^3 grid: many coplanar and
+// cospherical ones, constraints in Delaunay facets' planes.
+TEST(CavitySweep, DisturbedSimplicesAreThoseTheDefinitionNames) {
+  int plcs = 0, disturbed = 0, clear = 0;
+  for (uint64_t seed = 0; seed < 250; ++seed) {
+    std::mt19937_64 rng(seed);
+    const Plc<3> plc = fixtures::random_constrained_plc<3>(rng, 10, 8, 8);
+    const detail::DelaunayMesh dt = detail::delaunay_mesh<3>(plc.points);
+    const detail::ConstraintFaces faces = detail::constraint_faces<3>(plc, dt, 1);
+    if (faces.missing.empty()) continue;
+    ++plcs;
+    const detail::Disturbed found = detail::disturbed_simplices<3>(plc, dt, faces.missing, 1);
+    ASSERT_EQ(found.tets.size(), dt.tets.size() / 4) << "seed " << seed;
+    for (std::size_t t = 0; t < dt.tets.size() / 4; ++t) {
+      const uint32_t* s = &dt.tets[4 * t];
+      bool expected = false;
+      for (const uint32_t m : faces.missing) {
+        const uint32_t* c = plc.simplex(m);
+        const std::array<const double*, 3> c_points{plc.point(c[0]), plc.point(c[1]), plc.point(c[2])};
+        const std::array<uint32_t, 3> c_ids{c[0], c[1], c[2]};
+        expected = detail::interior_meets<3>({plc.point(s[0]), plc.point(s[1]), plc.point(s[2]), plc.point(s[3])}, c_points);
+        for (int i = 0; i < 4 && !expected; ++i) {
+          const detail::FacetKey<3> f = detail::facet_key<3>(s, i);
+          expected = detail::improper_intersection<3>({plc.point(f[0]), plc.point(f[1]), plc.point(f[2])}, f, c_points, c_ids);
+        }
+        if (expected) break;
+      }
+      ASSERT_EQ(found.tets[t] != 0, expected) << "seed " << seed << ", tetrahedron " << t;
+      ++(expected ? disturbed : clear);
+    }
+  }
+  EXPECT_GE(plcs, 100);
+  EXPECT_GE(disturbed, 500);
+  std::printf("  %d PLCs with missing constraints: %d tetrahedra disturbed, %d not\n", plcs, disturbed, clear);
 }
 
 // Closed surfaces (notated, facet-bounded) refined with Steiner points: the refined PLC has a CDT,

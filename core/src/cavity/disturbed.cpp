@@ -9,10 +9,33 @@
 #include "../simplex_interior.h"
 #include "../simplex_intersection.h"
 #include "../tuple_map.h"
+#include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/triangulation.h"
 
 namespace sweepcdt::detail {
 namespace {
+
+// Whether every vertex of simplex s that constraining simplex c does not share lies strictly on one
+// side of c's hyperplane (exact orientations; none of the 35 planes of interior_meets, nor the facet
+// tests). Then s meets that hyperplane only in the hull of the shared vertices, a face of both, so
+// neither its interior nor a facet meets c anywhere else: c does not disturb s. About half the
+// simplices around a constraint's vertex lie so (the hyperplane passes through the vertex), and
+// most of the neighbours the search looks at beyond the disturbed ones.
+template <int D>
+bool strictly_beside(const uint32_t* s, const std::array<const double*, D + 1>& s_points, const std::array<uint32_t, D>& c_ids,
+                     const std::array<const double*, D>& c_points) {
+  predicates::Coords<D + 1> plane;
+  std::copy(c_points.begin(), c_points.end(), plane.begin());
+  predicates::Sign side = predicates::Sign::Zero;
+  for (int k = 0; k <= D; ++k) {
+    if (std::find(c_ids.begin(), c_ids.end(), s[k]) != c_ids.end()) continue;  // shared: in the hyperplane
+    plane[D] = s_points[k];
+    const predicates::Sign sk = predicates::orient<D>(plane);
+    if (sk == predicates::Sign::Zero || (side != predicates::Sign::Zero && sk != side)) return false;
+    side = sk;
+  }
+  return true;
+}
 
 // Does constraining simplex `c` disturb simplex `s` (disturbed.h)? Exact: interior_meets() decides
 // whether it meets the open simplex, improper_intersection() whether it meets a facet other than in
@@ -25,8 +48,14 @@ bool disturbs(const Plc<D>& plc, const uint32_t* s, const uint32_t* c) {
   for (int k = 0; k < D; ++k) c_points[k] = plc.point(c[k]), c_ids[k] = c[k];
   std::array<const double*, D + 1> s_points;
   for (int k = 0; k <= D; ++k) s_points[k] = plc.point(s[k]);
-  if (interior_meets<D>(s_points, c_points)) return true;
+  if (strictly_beside<D>(s, s_points, c_ids, c_points)) return false;
+  // When c lies on the closed outer side of a facet's hyperplane, it meets s only in that facet, and
+  // another facet meets it improperly only at points of that one, where that one does too (the
+  // faces two facets share span their common vertices): that facet alone is tested.
+  int outer = -1;
+  if (interior_meets<D>(s_points, c_points, &outer)) return true;
   for (int i = 0; i <= D; ++i) {
+    if (outer >= 0 && i != outer) continue;
     const FacetKey<D> f = facet_key<D>(s, i);  // sorted: improper_intersection pairs vertices by id
     std::array<const double*, D> f_points;
     for (int k = 0; k < D; ++k) f_points[k] = plc.point(f[k]);
