@@ -64,6 +64,7 @@ class Refiner {
     std::vector<uint32_t> original;           // original_
     std::vector<double> parameter;            // parameter_
     std::vector<uint64_t> tolerated, fold_segments;  // sorted
+    std::vector<uint64_t> required;                  // the input segments required then, sorted
   };
   // The refiner that handed out `last` and was set aside as `kept`, made again, with the
   // tetrahedralization `last` carries (else computed again, on a second thread while the facets are
@@ -77,6 +78,7 @@ class Refiner {
     groups_ = group_facets(input, options_.facets);
     tolerated_.insert(kept.tolerated.begin(), kept.tolerated.end());
     fold_segments_.insert(kept.fold_segments.begin(), kept.fold_segments.end());
+    required_before_ = std::move(kept.required);
     r_.plc.region_seeds = input.region_seeds;
     r_.num_input_points = last.num_input_points;
     r_.facets = last.facets;
@@ -123,17 +125,18 @@ class Refiner {
   // added no point keeps its tetrahedralization of the input points, and the next starts from the
   // input with it, as a refinement from scratch does (the same points and triangles).
   Kept set_aside(bool added_points) {
-    if (!added_points) return Kept{std::move(first_delaunay_), {}, {}, {}, {}};
+    if (!added_points) return Kept{std::move(first_delaunay_), {}, {}, {}, {}, {}};
     Kept kept{nullptr, std::move(original_), std::move(parameter_), {tolerated_.begin(), tolerated_.end()},
-              {fold_segments_.begin(), fold_segments_.end()}};
-    for (auto* keys : {&kept.tolerated, &kept.fold_segments}) std::sort(keys->begin(), keys->end());
+              {fold_segments_.begin(), fold_segments_.end()}, {}};
+    if (required_) kept.required.assign(required_->begin(), required_->end());
+    for (auto* keys : {&kept.tolerated, &kept.fold_segments, &kept.required}) std::sort(keys->begin(), keys->end());
     return kept;
   }
   Refiner(const Refiner&) = delete;
   Refiner& operator=(const Refiner&) = delete;
 
   // Refinement::next() (refine.h): a refiner made again from what an earlier one set aside looks at
-  // every segment again, splits the pieces of those required since, and goes on from there.
+  // the segments required since, splits their pieces, and goes on from there.
   RefinedPlc run_again() {
     more_required_ = looked_;
     return run();
@@ -354,8 +357,11 @@ class Refiner {
   // pass (the later ones: changed_segments_not_in). A segment checked in an earlier round and still
   // there was Delaunay then (the others were split), so only new segments and those whose ends the
   // new points' cavities touched need checking again. The first time every one is checked, from
-  // the list set_up made while the tetrahedralization was computed (most of the scan's time); and
-  // every one again when a Refinement continues with more segments required (refine.h).
+  // the list set_up made while the tetrahedralization was computed (most of the scan's time). When a
+  // Refinement continues with more segments required (refine.h), the pieces of those: the last
+  // attempt ended with every other piece Delaunay or tolerated, and nothing has changed since (the
+  // pieces of folds made segments are looked at too). Looking at every piece again took a quarter
+  // of such an attempt on a 35k-triangle marching-tetrahedra surface that added 68 points.
   std::vector<uint64_t> segments_not_in(DelaunayEdges& delaunay) {
     std::vector<uint64_t> split;
     const auto check = [&](uint64_t key, bool first_look) {
@@ -366,12 +372,20 @@ class Refiner {
       first_segments_ = {};
       looked_ = true;
     } else if (more_required_) {
-      for_each_segment([&](uint64_t key) { check(key, false); }, [](uint32_t, uint32_t) { return true; });
+      for_each_segment([&](uint64_t key) { check(key, false); }, [&](uint32_t a, uint32_t b) { return required_since(a, b); });
     } else {
       for_each_segment([&](uint64_t key) { check(key, false); }, [&](uint32_t a, uint32_t b) { return delaunay.may_have_changed(a, b); });
     }
     more_required_ = false;
     return split;
+  }
+
+  // Whether ab may be a piece of an input segment required since the last attempt, or of a fold.
+  bool required_since(uint32_t a, uint32_t b) const {
+    const std::array<uint32_t, 2> s = input_segment_of(a, b);
+    if (s[0] == kNone) return true;
+    const uint64_t key = edge_key(s[0], s[1]);
+    return required_ && required_->count(key) && !std::binary_search(required_before_.begin(), required_before_.end(), key);
   }
 
   // visit(key) for each segment once, in triangle order, whose ends pass `ends(a, b)`.
@@ -769,7 +783,8 @@ class Refiner {
   bool prepared_ = false;                 // prepare_to_add_points() has run
   std::vector<uint64_t> first_segments_;  // every segment once, in triangle order, for the first round
   bool looked_ = false;                   // the first round has looked at every segment
-  bool more_required_ = false;            // run_again(): look at every segment again
+  bool more_required_ = false;            // run_again(): look at the segments required since (segments_not_in)
+  std::vector<uint64_t> required_before_;  // sorted: the input segments required in the last attempt
   std::vector<uint32_t> locate_from_;     // per point added since the tetrahedralization took the last ones: an end of what it split
   bool continues_ = false;                // made again from what an earlier refiner set aside (splits())
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
