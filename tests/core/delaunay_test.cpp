@@ -343,6 +343,26 @@ TEST(Delaunay3, EdgesReboundToACopyOfThePoints) {
     for (uint32_t b = a + 1; b < 120; ++b) ASSERT_EQ(edges.has_edge(a, b), expected.count({a, b}) > 0) << a << " " << b;
 }
 
+// A mesh's tetrahedra, each with its vertices sorted; and the Delaunay tetrahedralization of
+// `points` built from scratch, so.
+std::set<Tet> tets_of(const detail::DelaunayMesh& mesh) {
+  std::set<Tet> tets;
+  for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+    Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
+    std::sort(tet.begin(), tet.end());
+    tets.insert(tet);
+  }
+  return tets;
+}
+std::set<Tet> from_scratch(const std::vector<double>& points) {
+  std::set<Tet> tets;
+  for (Tet tet : detail::delaunay_simplices<3>(points)) {
+    std::sort(tet.begin(), tet.end());
+    tets.insert(tet);
+  }
+  return tets;
+}
+
 // A triangulation taken from a mesh (a refinement made again takes its last attempt's, refine.cpp)
 // behaves as the one that made the mesh: has_edge and link_vertices as the triangulation from
 // scratch, and so after more points are inserted into it, grid points included (ties, hull facets
@@ -376,18 +396,7 @@ TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
         ASSERT_TRUE(link_is_edges(adopted, a, expected)) << what << ": link of " << a << " with " << end << " points";
         for (uint32_t b = a + 1; b < end; ++b) ASSERT_EQ(adopted.has_edge(a, b), expected.count({a, b}) > 0) << what << ": " << a << " " << b;
       }
-      std::set<Tet> kept, fresh;
-      const detail::DelaunayMesh mesh = adopted.mesh();
-      for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-        Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
-        std::sort(tet.begin(), tet.end());
-        kept.insert(tet);
-      }
-      for (Tet tet : detail::delaunay_simplices<3>(points)) {
-        std::sort(tet.begin(), tet.end());
-        fresh.insert(tet);
-      }
-      EXPECT_EQ(kept, fresh) << what << " with " << end << " points";
+      EXPECT_EQ(tets_of(adopted.mesh()), from_scratch(points)) << what << " with " << end << " points";
     }
   }
 }
@@ -432,18 +441,7 @@ TEST(Delaunay3, PointsLocatedFromANamedPointGiveTheSameTriangulation) {
           }
         };
         edges.insert_new_points(near);
-        std::set<Tet> kept, fresh;
-        const detail::DelaunayMesh mesh = edges.mesh();
-        for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-          Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
-          std::sort(tet.begin(), tet.end());
-          kept.insert(tet);
-        }
-        for (Tet tet : detail::delaunay_simplices<3>(points)) {
-          std::sort(tet.begin(), tet.end());
-          fresh.insert(tet);
-        }
-        ASSERT_EQ(kept, fresh) << what << ", rule " << rule << ", " << end << " points";
+        ASSERT_EQ(tets_of(edges.mesh()), from_scratch(points)) << what << ", rule " << rule << ", " << end << " points";
       }
     }
   }
