@@ -18,9 +18,10 @@ namespace {
 // Whether every vertex of simplex s that constraining simplex c does not share lies strictly on one
 // side of c's hyperplane (exact orientations; none of the 35 planes of interior_meets, nor the facet
 // tests). Then s meets that hyperplane only in the hull of the shared vertices, a face of both, so
-// neither its interior nor a facet meets c anywhere else: c does not disturb s. About half the
-// simplices around a constraint's vertex lie so (the hyperplane passes through the vertex), and
-// most of the neighbours the search looks at beyond the disturbed ones.
+// neither its interior nor a facet meets c anywhere else: c does not disturb s. On thingi_1706459.stl
+// 40% of the simplices tested lie so (the hyperplane passes through the constraint's vertex the
+// search starts around, and beside the disturbed simplices), and 37% more have c outside a facet
+// (disturbs: one facet tested, not four).
 template <int D>
 bool strictly_beside(const uint32_t* s, const std::array<const double*, D + 1>& s_points, const std::array<uint32_t, D>& c_ids,
                      const std::array<const double*, D>& c_points) {
