@@ -195,34 +195,34 @@ void check_intersections(const Plc<D>& plc, const std::vector<char>& usable, Pro
                          const std::vector<char>* suspect = nullptr) {
   std::vector<char> used(plc.num_points(), 0);
   for (uint32_t id : plc.simplices) used[id] = 1;
+  const bool every_point_used = std::all_of(used.begin(), used.end(), [](char c) { return c != 0; });
   // Nothing to test (a refined PLC whose facets are all exactly the input's, every point on them):
   // no spatial index either.
-  if (suspect && std::none_of(suspect->begin(), suspect->end(), [](char c) { return c != 0; }) &&
-      std::all_of(used.begin(), used.end(), [](char c) { return c != 0; }))
-    return;
+  if (suspect && every_point_used && std::none_of(suspect->begin(), suspect->end(), [](char c) { return c != 0; })) return;
   std::vector<detail::Box<D>> boxes(plc.num_simplices());
   for (std::size_t j = 0; j < boxes.size(); ++j) boxes[j] = detail::Box<D>::of_points(simplex_coords(plc, j).data(), D);
-  if (suspect && std::all_of(used.begin(), used.end(), [](char c) { return c != 0; })) {
+  if (suspect) {
     check_suspect_pairs(plc, usable, *suspect, boxes, problems, threads);
-    return;
+    if (every_point_used) return;
   }
   const detail::BoxTree<D> tree(boxes);
 
-  std::vector<ProblemList> found(detail::parts_for(boxes.size(), threads), ProblemList(problems.limit()));
-  detail::for_each_part(boxes.size(), threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
-    for (std::size_t j = begin; j < end; ++j) {
-      if (!usable[j] || (suspect && !(*suspect)[j])) continue;
-      const auto a = simplex_coords(plc, j);
-      const auto ida = simplex_ids(plc, j);
-      tree.for_each_overlap(boxes[j], [&](uint32_t k) {
-        // Each pair once: from its first simplex, or from its suspect one.
-        if (k == j || !usable[k] || (k < j && (!suspect || (*suspect)[k]))) return;
-        if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
-          found[part].add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
-      });
-    }
-  });
-  for (ProblemList& part : found) problems.append(std::move(part));
+  if (!suspect) {
+    std::vector<ProblemList> found(detail::parts_for(boxes.size(), threads), ProblemList(problems.limit()));
+    detail::for_each_part(boxes.size(), threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+      for (std::size_t j = begin; j < end; ++j) {
+        if (!usable[j]) continue;
+        const auto a = simplex_coords(plc, j);
+        const auto ida = simplex_ids(plc, j);
+        tree.for_each_overlap(boxes[j], [&](uint32_t k) {
+          if (k <= j || !usable[k]) return;  // each pair once, from its first simplex
+          if (detail::improper_intersection<D>(a, ida, simplex_coords(plc, k), simplex_ids(plc, k)))
+            found[part].add(PlcProblemKind::Intersection, {j, k}, "simplices " + n(j) + " and " + n(k) + " intersect other than in a shared face");
+        });
+      }
+    });
+    for (ProblemList& part : found) problems.append(std::move(part));
+  }
 
   // Points that are vertices of no simplex must not lie on one either.
   for (uint32_t i = 0; i < plc.num_points(); ++i) {

@@ -4,6 +4,7 @@
 // one back (no tombstones: the sweep never erases, EditableCdt's constraint map does at each
 // deletion). No per-entry allocation, unlike std::unordered_map.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -67,6 +68,13 @@ class TupleMap {
   }
 
   std::size_t size() const { return size_; }
+  std::size_t capacity() const { return values_.size(); }
+
+  // Empties the map and keeps its capacity (a map reused for many small sets allocates once).
+  void clear() {
+    std::fill(values_.begin(), values_.end(), kAbsent);
+    size_ = 0;
+  }
 
  private:
   static std::size_t capacity_for(std::size_t expected) {

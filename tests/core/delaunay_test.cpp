@@ -343,24 +343,23 @@ TEST(Delaunay3, EdgesReboundToACopyOfThePoints) {
     for (uint32_t b = a + 1; b < 120; ++b) ASSERT_EQ(edges.has_edge(a, b), expected.count({a, b}) > 0) << a << " " << b;
 }
 
-// A mesh's tetrahedra, each with its vertices sorted; and the Delaunay tetrahedralization of
-// `points` built from scratch, so.
-std::set<Tet> tets_of(const detail::DelaunayMesh& mesh) {
-  std::set<Tet> tets;
-  for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-    Tet tet{mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]};
-    std::sort(tet.begin(), tet.end());
-    tets.insert(tet);
+// Three sets of random points and three of distinct grid points (ties, coplanar hull facets), named.
+std::vector<std::pair<std::string, std::vector<double>>> random_and_grid_cases(int random_count, uint64_t random_seed, int grid_count,
+                                                                               int grid_size, uint64_t grid_seed) {
+  std::vector<std::pair<std::string, std::vector<double>>> cases;
+  for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(random_count, random_seed + seed));
+  for (uint64_t seed = 0; seed < 3; ++seed) {
+    std::mt19937_64 rng(grid_seed + seed);
+    cases.emplace_back("grid " + std::to_string(seed), fixtures::distinct_grid_points<3>(rng, grid_count, grid_size));
   }
-  return tets;
+  return cases;
 }
-std::set<Tet> from_scratch(const std::vector<double>& points) {
-  std::set<Tet> tets;
-  for (Tet tet : detail::delaunay_simplices<3>(points)) {
-    std::sort(tet.begin(), tet.end());
-    tets.insert(tet);
-  }
-  return tets;
+
+// A mesh's tetrahedra as a set (as_set), to compare with the triangulation built from scratch.
+TetSet tets_of(const detail::DelaunayMesh& mesh) {
+  std::vector<Tet> tets;
+  for (std::size_t t = 0; t < mesh.tets.size(); t += 4) tets.push_back({mesh.tets[t], mesh.tets[t + 1], mesh.tets[t + 2], mesh.tets[t + 3]});
+  return as_set(tets);
 }
 
 // A triangulation taken from a mesh (a refinement made again takes its last attempt's, refine.cpp)
@@ -369,13 +368,7 @@ std::set<Tet> from_scratch(const std::vector<double>& points) {
 // in one plane). Every point counts as changed after adopting, as after building; a mesh that
 // misses a point is refused.
 TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
-  std::vector<std::pair<std::string, std::vector<double>>> cases;
-  for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(150, 40 + seed));
-  for (uint64_t seed = 0; seed < 3; ++seed) {
-    std::mt19937_64 rng(900 + seed);
-    cases.emplace_back("grid " + std::to_string(seed), fixtures::distinct_grid_points<3>(rng, 120, 4));
-  }
-  for (const auto& [what, all] : cases) {
+  for (const auto& [what, all] : random_and_grid_cases(150, 40, 120, 4, 900)) {
     const std::size_t n = all.size() / 3;
     std::vector<double> points(all.begin(), all.begin() + 3 * (n / 2));
     const detail::DelaunayEdges built(points);
@@ -396,7 +389,7 @@ TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
         ASSERT_TRUE(link_is_edges(adopted, a, expected)) << what << ": link of " << a << " with " << end << " points";
         for (uint32_t b = a + 1; b < end; ++b) ASSERT_EQ(adopted.has_edge(a, b), expected.count({a, b}) > 0) << what << ": " << a << " " << b;
       }
-      EXPECT_EQ(tets_of(adopted.mesh()), from_scratch(points)) << what << " with " << end << " points";
+      EXPECT_EQ(tets_of(adopted.mesh()), as_set(detail::delaunay_simplices<3>(points))) << what << " with " << end << " points";
     }
   }
 }
@@ -406,13 +399,7 @@ TEST(Delaunay3, EdgesFromAMeshGoOnAsTheTriangulationItCameFrom) {
 // whatever is named — an inserted point beside it, one far off, a point on the hull (its simplex may
 // be a ghost), one of the batch not inserted yet, the point itself, kNone. Random and grid points.
 TEST(Delaunay3, PointsLocatedFromANamedPointGiveTheSameTriangulation) {
-  std::vector<std::pair<std::string, std::vector<double>>> cases;
-  for (uint64_t seed = 0; seed < 3; ++seed) cases.emplace_back("random " + std::to_string(seed), random_points(200, 60 + seed));
-  for (uint64_t seed = 0; seed < 3; ++seed) {
-    std::mt19937_64 rng(700 + seed);
-    cases.emplace_back("grid " + std::to_string(seed), fixtures::distinct_grid_points<3>(rng, 160, 5));
-  }
-  for (const auto& [what, all] : cases) {
+  for (const auto& [what, all] : random_and_grid_cases(200, 60, 160, 5, 700)) {
     const uint32_t n = static_cast<uint32_t>(all.size() / 3);
     for (int rule = 0; rule < 6; ++rule) {
       std::vector<double> points(all.begin(), all.begin() + 3 * (n / 4));
@@ -441,7 +428,7 @@ TEST(Delaunay3, PointsLocatedFromANamedPointGiveTheSameTriangulation) {
           }
         };
         edges.insert_new_points(near);
-        ASSERT_EQ(tets_of(edges.mesh()), from_scratch(points)) << what << ", rule " << rule << ", " << end << " points";
+        ASSERT_EQ(tets_of(edges.mesh()), as_set(detail::delaunay_simplices<3>(points))) << what << ", rule " << rule << ", " << end << " points";
       }
     }
   }

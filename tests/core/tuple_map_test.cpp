@@ -88,3 +88,19 @@ TEST(TupleMap, EraseKeepsEveryProbeRunWhole) {
     ASSERT_EQ(map.size(), 0u);
   }
 }
+
+// clear() (a map reused for many small sets, editable_cdt.cpp): empty afterwards, its capacity kept,
+// and filled again like a new one.
+TEST(TupleMap, ClearedMapIsEmptyAndFillsAgain) {
+  detail::TupleMap<1> map(4);
+  for (uint32_t round = 0; round < 3; ++round) {
+    for (uint32_t i = 0; i < 100; ++i) ASSERT_TRUE(map.emplace({7 * i + round}, i).second);
+    for (uint32_t i = 0; i < 100; ++i) ASSERT_FALSE(map.emplace({7 * i + round}, 0).second);
+    ASSERT_EQ(map.size(), 100u);
+    const std::size_t capacity = map.capacity();
+    map.clear();
+    EXPECT_EQ(map.size(), 0u);
+    EXPECT_EQ(map.capacity(), capacity);
+    for (uint32_t i = 0; i < 100; ++i) ASSERT_FALSE(map.contains({7 * i + round}));
+  }
+}

@@ -32,67 +32,21 @@ using predicates::Sign;
 
 namespace {
 
-// A set of ids (simplex slots, vertex ids) kept on this thread: deletions are worked out on several
-// threads at once (remove_steiner.cpp), each with its own set, and a new set is a new stamp, not a
-// table filled again nor one allocated (a hash table built for each star, whose simplices number
-// hundreds on thin walls, was a tenth of a deletion's plan on perforated_tube_std). Open addressing
-// in a table that grows to twice the largest set seen: small beside the mesh (a table of flags per
-// simplex slot, as large as the mesh's simplex array, added 90 MB to the peak of a 9M-tetrahedron
-// mesh). One set of a Kind at a time on a thread: the next one started empties it.
-template <int Kind>
-class MarkedIds {
- public:
-  MarkedIds() : table_(table()) {
-    if (table_.slots.empty()) table_.slots.resize(kFirstSize);
-    if (++table_.stamp == 0) {  // after 2^32 sets: no slot may look filled by accident
-      for (Slot& slot : table_.slots) slot.stamp = 0;
-      table_.stamp = 1;
-    }
-    table_.count = 0;
-  }
-  // True when `id` was not in the set yet (and adds it).
-  bool insert(uint32_t id) {
-    if (2 * (table_.count + 1) > table_.slots.size()) grow();
-    if (!place(table_.slots, id)) return false;
-    ++table_.count;
-    return true;
-  }
-
- private:
-  struct Slot {
-    uint32_t id = 0, stamp = 0;  // filled in this set when stamp is the table's
-  };
-  struct Table {
-    std::vector<Slot> slots;
-    uint32_t stamp = 0;
-    std::size_t count = 0;
-  };
-  static constexpr std::size_t kFirstSize = 512;  // a power of two
-  static Table& table() {
-    thread_local Table table;
-    return table;
-  }
-  // Adds id to `slots` unless it is there already (then false).
-  bool place(std::vector<Slot>& slots, uint32_t id) const {
-    const std::size_t mask = slots.size() - 1;
-    for (std::size_t i = (id * std::size_t{0x9E3779B97F4A7C15}) >> 32 & mask;; i = (i + 1) & mask) {
-      Slot& slot = slots[i];
-      if (slot.stamp != table_.stamp) {
-        slot = {id, table_.stamp};
-        return true;
-      }
-      if (slot.id == id) return false;
-    }
-  }
-  void grow() {
-    std::vector<Slot> larger(2 * table_.slots.size());
-    for (const Slot& slot : table_.slots)
-      if (slot.stamp == table_.stamp) place(larger, slot.id);
-    table_.slots = std::move(larger);
-  }
-  Table& table_;
-};
+// An empty set of ids (simplex slots, vertex ids) for a star, one per thread and Kind, reused:
+// deletions are worked out on several threads at once (remove_steiner.cpp), and a map constructed
+// for each star, whose simplices number hundreds on thin walls, spent a tenth of a deletion's plan on
+// perforated_tube_std allocating and growing. The map keeps the capacity a star needed (emptying it
+// costs that much), unless one star made it very large; one set of a Kind at a time on a thread:
+// the next call empties it.
 enum MarkKind { kStarSimplices, kStarVertices };
+template <int Kind>
+detail::TupleMap<1>& empty_star_set() {
+  constexpr std::size_t kSmall = 256, kLarge = std::size_t{1} << 16;
+  thread_local detail::TupleMap<1> set(kSmall);
+  if (set.capacity() > kLarge) set = detail::TupleMap<1>(kSmall);
+  else set.clear();
+  return set;
+}
 
 }  // namespace
 
@@ -237,14 +191,14 @@ struct EditableCdt<D>::Impl {
   // --- the star of v -----------------------------------------------------------------------------
   std::vector<uint32_t> star_of(uint32_t v) const {
     std::vector<uint32_t> star{simplex_at[v]};
-    MarkedIds<kStarSimplices> seen;
-    seen.insert(star[0]);
+    detail::TupleMap<1>& seen = empty_star_set<kStarSimplices>();
+    seen.emplace({star[0]}, 0);
     for (std::size_t k = 0; k < star.size(); ++k) {
       const uint32_t t = star[k];
       for (int i = 0; i <= D; ++i) {
         const uint32_t across = neighbors[std::size_t{t} * (D + 1) + i];
         if (simplex(t)[i] == v || across == kNone) continue;  // the link face, or the domain's boundary
-        if (seen.insert(across / (D + 1))) star.push_back(across / (D + 1));
+        if (seen.emplace({across / (D + 1)}, 0).second) star.push_back(across / (D + 1));
       }
     }
     return star;
@@ -332,10 +286,10 @@ struct EditableCdt<D>::Impl {
       // The star's other vertices, each once, as the star lists them (any order decides the same).
       std::vector<uint32_t> ids;
       ids.reserve(star.size());
-      MarkedIds<kStarVertices> seen;
+      detail::TupleMap<1>& seen = empty_star_set<kStarVertices>();
       for (const uint32_t t : star)
         for (int i = 0; i <= D; ++i)
-          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b && seen.insert(x)) ids.push_back(x);
+          if (const uint32_t x = simplex(t)[i]; x != v && x != a && x != b && seen.emplace({x}, 0).second) ids.push_back(x);
       std::vector<predicates::Vertex> others;
       others.reserve(ids.size());
       for (const uint32_t x : ids) others.push_back({point(x), order(x)});
