@@ -17,6 +17,7 @@
 
 #include "brute_force_cdt.h"
 #include "cad_noise.h"
+#include "edit/blocked_segment.h"
 #include "random_plc.h"
 #include "simplex_tiling.h"
 #include "star_shapes.h"
@@ -521,6 +522,81 @@ TEST(EditableCdt, EarlyRefusalsOfMergedSegmentsAgreeWithCdtFromScratch) {
               << " deleted, " << early << " refused early (" << checked << " checked), " << later << " refused by the star sweep\n";
     EXPECT_GT(early, 10);
     EXPECT_GT(deleted, 10);
+  }
+}
+
+// An early refusal's witness: the merged segment's ends and three vertices of the star, one of which
+// every sphere through those ends holds. While those five stay, the refusal stands (deletions only
+// add vertices to v's star, never take one away but the deleted one; with guessed refusals on, as in
+// the deletion pass, a point whose pieces a deletion bent is refused by the same test as a guess),
+// which is why the deletion pass need not try v again when another neighbour goes
+// (remove_steiner.cpp). Every Steiner point of the fins tried in turn, the others deleted meanwhile;
+// after each deletion every refusal whose witness is intact is tried again and must still be
+// refused early.
+TEST(EditableCdt, EarlyRefusalsStandWhileTheirWitnessStays) {
+  for (const bool noise : {true, false}) {
+    std::vector<double> xs{0, 1}, tops{0.1875};
+    for (int fin = 0; fin < 3; ++fin) {
+      xs.push_back(xs.back() + 0.015625);
+      tops.push_back(1.0);
+      xs.push_back(xs.back() + 0.1875);
+      tops.push_back(0.1875 + 0.0078125 * fin);
+    }
+    const Plc<3> fins = noise ? sweepcdt::testing::noisy_fins(2) : fixtures::extruded_columns(xs, tops, 1.0);
+    Options options = mesh_defaults();
+    options.remove_steiner_points = false;
+    options.algorithm = Algorithm::SweepPlane;  // every segment refined (no lazy refinement)
+    if (!noise) options.facets = FacetMode::Triangles;
+    Plc<3> refined;
+    const Triangulation<3> tri = cdt(fins, options, &refined);
+    const std::vector<uint32_t>& rank = tri.perturbation_rank;
+    EditableCdt<3> mesh(refined, tri);
+    mesh.unbend_facets_at_steiner_points(1000);
+    mesh.guess_blocked_refusals(true);  // as the deletion pass: guessed refusals have no witness
+    const auto early = [](const NoCdtError& e) { return std::string(e.what()).find("is not Delaunay (every sphere") != std::string::npos; };
+    const auto guessed = [](const VertexRemovalError& e) { return std::string(e.what()).find("lies off that segment or its facets are bent") != std::string::npos; };
+    std::map<uint32_t, std::vector<uint32_t>> standing;  // refused early: vertex -> witness
+    int refusals = 0, retried = 0, deleted = 0;
+    for (int pass = 0; pass < 2; ++pass)
+      for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v) {
+        if (!mesh.has_vertex(v) || standing.contains(v)) continue;
+        try {
+          mesh.remove_vertex(v);
+        } catch (const NoCdtError& e) {
+          if (!early(e)) continue;
+          ++refusals;
+          std::vector<uint32_t> witness = e.witness();
+          ASSERT_EQ(witness.size(), 5u) << "vertex " << v;
+          for (const uint32_t w : witness) EXPECT_TRUE(mesh.has_vertex(w) && w != v) << "vertex " << v << ": witness " << w;
+          // What the witness says, checked on its own: every sphere through its first two holds one of the others.
+          const auto vertex = [&](uint32_t w) { return predicates::Vertex{refined.point(w), rank.empty() ? w : rank[w]}; };
+          EXPECT_EQ(detail::segment_in_spheres(vertex(witness[0]), vertex(witness[1]), {vertex(witness[2]), vertex(witness[3]), vertex(witness[4])}).answer,
+                    detail::SegmentInSpheres::Blocked)
+              << "vertex " << v;
+          standing[v] = std::move(witness);
+          continue;
+        } catch (const VertexRemovalError&) {
+          continue;
+        }
+        ++deleted;
+        std::erase_if(standing, [&](const auto& entry) { return std::find(entry.second.begin(), entry.second.end(), v) != entry.second.end(); });
+        for (const auto& entry : standing) {
+          const uint32_t u = entry.first;
+          ++retried;
+          try {
+            mesh.remove_vertex(u);
+            ADD_FAILURE() << "vertex " << u << " deleted after " << v << " went, its early refusal's witness intact";
+          } catch (const NoCdtError& e) {
+            EXPECT_TRUE(early(e)) << "vertex " << u << ": " << e.what();
+          } catch (const VertexRemovalError& e) {  // its pieces bent since: the same test, a guess now
+            EXPECT_TRUE(guessed(e)) << "vertex " << u << ": " << e.what();
+          }
+        }
+      }
+    std::cout << "[ fins ] " << (noise ? "noisy" : "exact") << ": " << deleted << " deleted, " << refusals << " refused early, "
+              << retried << " of those tried again while their witness stayed\n";
+    EXPECT_GT(refusals, 10);
+    EXPECT_GT(retried, 100);
   }
 }
 

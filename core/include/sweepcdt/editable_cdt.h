@@ -89,8 +89,9 @@ class EditableCdt {
   // The same without throwing what a refused deletion met: false for NoCdtError and
   // VertexRemovalError (other errors are thrown), else true with the neighbours in `neighbours`. For
   // a caller that expects most deletions to be refused (unwinding costs as much as a small star).
-  // Given `witness`, a refusal leaves there the NoCdtError's witness (its vertex ids: mostly the
-  // simplex the star sweep found in front of a face built after it), empty for VertexRemovalError.
+  // Given `witness`, a refusal leaves there the NoCdtError's witness (its vertex ids: the simplex the
+  // star sweep found in front of a face built after it, or, refused early, the merged segment's
+  // ends and the three vertices that block it), empty for VertexRemovalError.
   bool try_commit_removal(Removal&& removal, std::vector<uint32_t>& neighbours, std::vector<uint32_t>* witness = nullptr);
   // Whether commit_removal() would use `removal` as it is (false for an empty one): no commit since
   // it was made changed what it read.

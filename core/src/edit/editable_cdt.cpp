@@ -262,16 +262,19 @@ struct EditableCdt<D>::Impl {
   // - exactly on ab, each input facet's pieces around it exactly flat, and its two pieces would merge
   //   into one that every sphere through a and b holds a vertex of v's star in (blocked_segment.h):
   //   that vertex is visible from v, a point of ab (the new facets through ab cover what the old
-  //   pieces did), so ab is not constrained Delaunay and the star sweep would find no CDT (NoCdtError,
-  //   without a witness: v is tried again whichever neighbour goes, at the cost of this test). On
-  //   float surfaces nearly every refusal is of this kind (pipe_tee_std: 5252 of 5272).
+  //   pieces did), so ab is not constrained Delaunay and the star sweep would find no CDT (NoCdtError
+  //   with the witness a, b and three vertices one of which every sphere through a and b holds: while
+  //   those five stay the refusal stands — a deletion adds vertices to v's star and takes none away
+  //   but the one deleted — so the deletion pass does not try v again when another neighbour goes;
+  //   should a deletion bend v's pieces, the same test refuses v as a guess, below). On float
+  //   surfaces nearly every refusal is of this kind (pipe_tee_std: 5252 of 5272).
   // - off ab, or in bent pieces, with the same test failing: v may see past the new facets, so this
   //   proves nothing (14 of 2252 such refusals on bracket_fine with rounding noise were deletions the
   //   star sweep accepts), and it is refused only when asked to guess (guess_blocked_refusals:
   //   VertexRemovalError). On double surfaces most refusals are of this kind: gearwheel_ascii.stl's
   //   star sweep refused 33973 deletions that the test blocks and 11 that it does not, and accepted
   //   22244, none of them blocked (session 30).
-  std::exception_ptr early_refusal(uint32_t v, const std::vector<uint32_t>& star, bool on_hull) const {
+  std::exception_ptr early_refusal(uint32_t v, const std::vector<uint32_t>& star, bool on_hull, std::vector<uint32_t>& witness) const {
     if constexpr (D != 3) {
       return {};
     } else {
@@ -301,11 +304,12 @@ struct EditableCdt<D>::Impl {
             "vertex " + std::to_string(v) + " is kept: the segment " + std::to_string(a) + "-" + std::to_string(b) +
             " its deletion would leave is not Delaunay (every sphere through its ends holds vertex " + std::to_string(ids[e]) + ", " +
             std::to_string(ids[c]) + " or " + std::to_string(ids[d]) + "), and it lies off that segment or its facets are bent there"));
+      witness = {a, b, ids[e], ids[c], ids[d]};
       return std::make_exception_ptr(no_cdt_error(v,
                                                   "the segment " + std::to_string(a) + "-" + std::to_string(b) +
                                                       " it would leave is not Delaunay (every sphere through its ends holds vertex " +
                                                       std::to_string(ids[e]) + ", " + std::to_string(ids[c]) + " or " + std::to_string(ids[d]) + ")",
-                                                  {}));
+                                                  witness));
     }
   }
 
@@ -426,7 +430,7 @@ struct EditableCdt<D>::Impl {
           on_hull = true;
 
     p.read_beyond = on_hull;
-    if ((p.error = early_refusal(v, star, on_hull))) {
+    if ((p.error = early_refusal(v, star, on_hull, p.witness))) {
       p.refused = p.early = true;
       return;
     }
