@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <random>
 #include <string>
 #include <thread>
@@ -141,6 +142,26 @@ void simplex_domain(int count, int size, int seeds) {
     const Tally tally = delete_all(plc, seed, what);
     EXPECT_GT(tally.deleted, count / 2) << what << ": " << tally.refused << " refused, " << tally.no_cdt << " without CDT";
   }
+}
+
+// Thin fins whose Steiner points the deletion pass mostly refuses early, every segment refined (the
+// sweep plane: no lazy refinement) and the points kept: with CAD noise (points rounded off their
+// segments, facets bent), or exact (noisy_fins' comb in binary fractions: points exactly on their
+// segments; every triangle's edges segments, for more points). The CDT, its refined PLC in `refined`.
+Triangulation<3> refined_fins(bool noise, Plc<3>& refined) {
+  std::vector<double> xs{0, 1}, tops{0.1875};
+  for (int fin = 0; fin < 3; ++fin) {
+    xs.push_back(xs.back() + 0.015625);
+    tops.push_back(1.0);
+    xs.push_back(xs.back() + 0.1875);
+    tops.push_back(0.1875 + 0.0078125 * fin);
+  }
+  const Plc<3> fins = noise ? sweepcdt::testing::noisy_fins(2) : fixtures::extruded_columns(xs, tops, 1.0);
+  Options options = mesh_defaults();
+  options.remove_steiner_points = false;
+  options.algorithm = Algorithm::SweepPlane;
+  if (!noise) options.facets = FacetMode::Triangles;
+  return cdt(fins, options, &refined);
 }
 
 }  // namespace
@@ -475,21 +496,8 @@ TEST(EditableCdt, SteinerPointsOffTheirSegmentGoWhenFacetsMayUnbend) {
 // meanwhile, so the stars grow as the pass makes them grow.
 TEST(EditableCdt, EarlyRefusalsOfMergedSegmentsAgreeWithCdtFromScratch) {
   for (const bool noise : {true, false}) {
-    // Without noise: noisy_fins' comb in binary fractions (points exactly on their segments).
-    std::vector<double> xs{0, 1}, tops{0.1875};
-    for (int fin = 0; fin < 3; ++fin) {
-      xs.push_back(xs.back() + 0.015625);
-      tops.push_back(1.0);
-      xs.push_back(xs.back() + 0.1875);
-      tops.push_back(0.1875 + 0.0078125 * fin);
-    }
-    const Plc<3> fins = noise ? sweepcdt::testing::noisy_fins(2) : fixtures::extruded_columns(xs, tops, 1.0);
-    Options options = mesh_defaults();
-    options.remove_steiner_points = false;
-    options.algorithm = Algorithm::SweepPlane;  // every segment refined (no lazy refinement)
-    if (!noise) options.facets = FacetMode::Triangles;  // every triangle's edges segments: more points
     Plc<3> refined;
-    const Triangulation<3> tri = cdt(fins, options, &refined);
+    const Triangulation<3> tri = refined_fins(noise, refined);
     ASSERT_GT(tri.steiner_on.size(), 20u);
     EditableCdt<3> mesh(refined, tri);
     mesh.unbend_facets_at_steiner_points(1000);
@@ -535,20 +543,8 @@ TEST(EditableCdt, EarlyRefusalsOfMergedSegmentsAgreeWithCdtFromScratch) {
 // refused early.
 TEST(EditableCdt, EarlyRefusalsStandWhileTheirWitnessStays) {
   for (const bool noise : {true, false}) {
-    std::vector<double> xs{0, 1}, tops{0.1875};
-    for (int fin = 0; fin < 3; ++fin) {
-      xs.push_back(xs.back() + 0.015625);
-      tops.push_back(1.0);
-      xs.push_back(xs.back() + 0.1875);
-      tops.push_back(0.1875 + 0.0078125 * fin);
-    }
-    const Plc<3> fins = noise ? sweepcdt::testing::noisy_fins(2) : fixtures::extruded_columns(xs, tops, 1.0);
-    Options options = mesh_defaults();
-    options.remove_steiner_points = false;
-    options.algorithm = Algorithm::SweepPlane;  // every segment refined (no lazy refinement)
-    if (!noise) options.facets = FacetMode::Triangles;
     Plc<3> refined;
-    const Triangulation<3> tri = cdt(fins, options, &refined);
+    const Triangulation<3> tri = refined_fins(noise, refined);
     const std::vector<uint32_t>& rank = tri.perturbation_rank;
     EditableCdt<3> mesh(refined, tri);
     mesh.unbend_facets_at_steiner_points(1000);
@@ -650,6 +646,61 @@ TEST(EditableCdt, GuessedRefusalsOnlyWhenAskedAndMostlyAsTheStarCdtDecides) {
   EXPECT_GT(guesses, 10);
   EXPECT_LE(10 * wrong, guesses);
   EXPECT_GT(deleted, 10);
+}
+
+// release() hands the mesh's own arrays over, compacted in place (no second copy at the end of the
+// deletion pass); it must give exactly what snapshot() gives: after deletions (dead slots and
+// constraints between live ones), with regions and tags, and with a
+// perturbation rank (the identity here, which the snapshot must renumber for the vertices left).
+TEST(EditableCdt, ReleaseGivesWhatSnapshotGives) {
+  const Plc<3> fins = sweepcdt::testing::noisy_fins(2);
+  Options options = mesh_defaults();
+  options.remove_steiner_points = false;
+  options.algorithm = Algorithm::SweepPlane;
+  Plc<3> refined;
+  Triangulation<3> tri = cdt(fins, options, &refined);
+  ASSERT_GT(tri.steiner_on.size(), 20u);
+  ASSERT_FALSE(tri.regions.empty());
+  for (const bool ranked : {false, true}) {
+    Triangulation<3> start = tri;
+    if (ranked) {
+      start.perturbation_rank.resize(start.num_points());
+      std::iota(start.perturbation_rank.begin(), start.perturbation_rank.end(), 0u);
+    }
+    EditableCdt<3> mesh(refined, start);
+    mesh.unbend_facets_at_steiner_points(1000);
+    int deleted = 0;
+    for (uint32_t v = tri.num_input_points; v < tri.num_points(); v += 2) {
+      try {
+        mesh.remove_vertex(v);
+        ++deleted;
+      } catch (const NoCdtError&) {
+      } catch (const VertexRemovalError&) {
+      }
+    }
+    ASSERT_GT(deleted, 10);
+    const EditableCdt<3>::Snapshot copy = mesh.snapshot();
+    const EditableCdt<3>::Snapshot own = std::move(mesh).release();
+    EXPECT_EQ(own.old_ids, copy.old_ids);
+    EXPECT_EQ(own.triangulation.points, copy.triangulation.points);
+    EXPECT_EQ(own.triangulation.num_input_points, copy.triangulation.num_input_points);
+    EXPECT_EQ(own.triangulation.steiner_on, copy.triangulation.steiner_on);
+    EXPECT_EQ(own.triangulation.perturbation_rank, copy.triangulation.perturbation_rank);
+    EXPECT_EQ(own.triangulation.perturbation_rank.empty(), !ranked);
+    EXPECT_EQ(own.triangulation.simplices, copy.triangulation.simplices);
+    EXPECT_EQ(own.triangulation.neighbors, copy.triangulation.neighbors);
+    EXPECT_EQ(own.triangulation.regions, copy.triangulation.regions);
+    EXPECT_EQ(own.plc.points, copy.plc.points);
+    EXPECT_EQ(own.plc.simplices, copy.plc.simplices);
+    EXPECT_EQ(own.plc.exterior, copy.plc.exterior);
+    EXPECT_EQ(own.plc.tags, copy.plc.tags);
+    EXPECT_EQ(own.plc.region_seeds.size(), copy.plc.region_seeds.size());
+    // And the snapshot is the CDT of its PLC, as cdt() computes it from scratch.
+    Triangulation<3> whole = own.triangulation;
+    whole.num_input_points = static_cast<uint32_t>(own.plc.num_points());
+    whole.steiner_on.clear();
+    EXPECT_TRUE(validate(whole, own.plc).ok());
+  }
 }
 
 TEST(EditableCdt, RefusesCornersAndUnknownVertices) {

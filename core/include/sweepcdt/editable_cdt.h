@@ -138,6 +138,9 @@ class EditableCdt {
     std::vector<uint32_t> old_ids;  // per vertex of the snapshot: its id in the EditableCdt
   };
   Snapshot snapshot() const;
+  // The same, the mesh given up for it (its arrays become the snapshot's; it is empty afterwards):
+  // no second copy of a large mesh at the end of an edit (std::move(mesh).release()).
+  Snapshot release() &&;
 
   // The PLC that remove_vertex(v) would leave — the facets through v triangulated anew as it does —
   // numbered as snapshot() would then number it. For callers that want to know more than

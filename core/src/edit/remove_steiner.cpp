@@ -143,7 +143,7 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
     } while (!plans.empty() && mesh.plan_is_current(plans.front()));
   }
   count.refused_early = mesh.refused_early();
-  EditableCdt<3>::Snapshot result = mesh.snapshot();
+  EditableCdt<3>::Snapshot result = std::move(mesh).release();
   tri = std::move(result.triangulation);
   plc = std::move(result.plc);
   return count;
