@@ -62,25 +62,46 @@ std::string read_file_bytes(const std::filesystem::path& file) {
 }
 
 void write_files_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files, const std::string& name) {
+  std::vector<std::pair<std::filesystem::path, TextMaker>> makers;
+  for (const auto& [target, bytes] : files) makers.emplace_back(target, [&bytes = bytes](TextOut& out) { out.flush(bytes); });
+  write_files_atomically(makers, name);
+}
+
+void write_files_atomically(const std::vector<std::pair<std::filesystem::path, TextMaker>>& files, const std::string& name) {
   std::vector<std::filesystem::path> temporaries;
-  auto give_up = [&](const std::filesystem::path& which, const std::string& why) {
+  auto remove_temporaries = [&] {
     std::error_code ignored;
     for (const auto& t : temporaries) std::filesystem::remove(t, ignored);
+  };
+  auto give_up = [&](const std::filesystem::path& which, const std::string& why) {
+    remove_temporaries();
     fail(InputErrorKind::Unreadable, name, Location::none(), "cannot write " + which.string() + ": " + why);
   };
-  for (const auto& [target, bytes] : files) {
+  for (const auto& [target, make] : files) {
     std::filesystem::path temporary;
     const int fd = create_temporary(target, temporary);
     if (fd < 0) give_up(target, std::strerror(errno));
     temporaries.push_back(temporary);
-    const bool written = write_all(fd, bytes);
-    const int write_errno = errno;
+    bool written = true;
+    int write_errno = 0;
+    TextOut out;
+    out.flush = [&](const std::string& bytes) {
+      if (written && !write_all(fd, bytes)) written = false, write_errno = errno;
+    };
+    try {
+      make(out);
+    } catch (...) {  // the writer's own error (memory): nothing left behind
+      ::close(fd);
+      remove_temporaries();
+      throw;
+    }
+    out.flush(out.text);
     // close() reports delayed write errors (NFS, full disks), so it decides too.
     if (::close(fd) != 0 || !written) give_up(target, std::strerror(written ? errno : write_errno));
   }
   // A folder under a target name would make its rename fail; find out before renaming any, so a set
   // of files is not left half replaced for that (the common) reason.
-  for (const auto& [target, bytes] : files) {
+  for (const auto& [target, make] : files) {
     std::error_code ec;
     if (std::filesystem::is_directory(target, ec)) give_up(target, "a folder of that name exists");
   }

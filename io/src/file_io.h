@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,23 @@ std::string read_file_bytes(const std::filesystem::path& file);
 // failing after an earlier one succeeded (another process removing the folder meanwhile) cannot be
 // undone: only then can a set of files end up mixed.
 void write_files_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files, const std::string& name);
+
+// A file's text as a writer makes it: appended to `text`, with spill() called between records. Past
+// a megabyte a spill hands the text so far to `flush` (the file being written) and empties it, so a
+// large mesh's file is never whole in memory (the fine perforated tube's 9M tetrahedra: 330 MB of
+// text). Without `flush` the text is kept whole (a writer's bytes as one string).
+struct TextOut {
+  std::string text;
+  std::function<void(const std::string&)> flush;
+  void spill() {
+    if (flush && text.size() >= (std::size_t{1} << 20)) flush(text), text.clear();
+  }
+};
+// A writer of one file's text into a TextOut.
+using TextMaker = std::function<void(TextOut&)>;
+
+// The same as write_files_atomically(), each file's text made and written piece by piece.
+void write_files_atomically(const std::vector<std::pair<std::filesystem::path, TextMaker>>& files, const std::string& name);
 
 // Shortest text that reads back as the same double (std::to_chars), so text output is exact.
 inline void append_double(std::string& out, double x) {

@@ -21,36 +21,31 @@ std::string lower(std::string s) {
 
 }  // namespace
 
-VolumeMesh volume_mesh_of(const Triangulation<3>& tri, const Plc<3>& triangulated) {
+VolumeMesh volume_mesh_of(Triangulation<3> tri, const Plc<3>& triangulated) {
   VolumeMesh mesh;
-  mesh.points = tri.points;
-  mesh.num_input_points = tri.num_input_points;
-  mesh.tetrahedra = tri.simplices;
   const std::size_t t = tri.num_simplices();
-  mesh.regions = tri.regions.size() == t ? tri.regions : std::vector<int32_t>(t, 0);
-  mesh.on_triangle.assign(tri.num_input_points, kNone);
-  mesh.on_triangle.insert(mesh.on_triangle.end(), tri.steiner_on.begin(), tri.steiner_on.end());
-  mesh.on_triangle.resize(tri.num_points(), kNone);  // a triangulation built by hand may not say
-
   // The domain boundary: facets with no tetrahedron on the other side. cdt() pairs neighbours; a
   // triangulation built by hand may come without them.
-  const Triangulation<3>* paired = &tri;
-  Triangulation<3> copy;
-  if (tri.neighbors.size() != 4 * t) {
-    copy = tri;
-    compute_neighbors(copy);
-    paired = &copy;
-  }
+  if (tri.neighbors.size() != 4 * t) compute_neighbors(tri);
   const detail::TriangleKeys constraints(triangulated);
   for (std::size_t s = 0; s < t; ++s)
     for (int i = 0; i < 4; ++i) {
-      if (paired->neighbors[4 * s + i] != kNone) continue;
+      if (tri.neighbors[4 * s + i] != kNone) continue;
       // Outward from the one tetrahedron inside: counterclockwise seen from outside the material,
       // whichever way the input triangle was notated.
       const auto f = detail::outward_facet(tri.simplex(s), i);
       mesh.boundary.insert(mesh.boundary.end(), f.begin(), f.end());
       mesh.boundary_tags.push_back(constraints.tag_of(f.data()));
     }
+  tri.neighbors = {};
+  mesh.num_input_points = tri.num_input_points;
+  mesh.on_triangle.assign(tri.num_input_points, kNone);
+  mesh.on_triangle.insert(mesh.on_triangle.end(), tri.steiner_on.begin(), tri.steiner_on.end());
+  mesh.on_triangle.resize(tri.num_points(), kNone);  // a triangulation built by hand may not say
+  // The rest is the triangulation's own (moved, when the caller hands it over: no second copy).
+  mesh.points = std::move(tri.points);
+  mesh.tetrahedra = std::move(tri.simplices);
+  mesh.regions = tri.regions.size() == t ? std::move(tri.regions) : std::vector<int32_t>(t, 0);
   return mesh;
 }
 
@@ -141,19 +136,20 @@ void check_read(const VolumeMesh& m, const std::string& file) {
 
 void write_volume_mesh(const std::filesystem::path& file, const VolumeMesh& mesh, MeshFormat format) {
   detail::check_writable(mesh, file.string());
-  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  using detail::TextOut;
+  std::vector<std::pair<std::filesystem::path, detail::TextMaker>> files;
+  const auto one = [&](void (*writer)(const VolumeMesh&, TextOut&)) { return [&mesh, writer](TextOut& out) { writer(mesh, out); }; };
   switch (format) {
-    case MeshFormat::Medit: files.emplace_back(file, detail::medit_text(mesh)); break;
-    case MeshFormat::Vtu: files.emplace_back(file, detail::vtu_text(mesh)); break;
-    case MeshFormat::Gmsh41: files.emplace_back(file, detail::gmsh_text(mesh, false)); break;
-    case MeshFormat::Gmsh22: files.emplace_back(file, detail::gmsh_text(mesh, true)); break;
-    case MeshFormat::Abaqus: files.emplace_back(file, detail::abaqus_text(mesh)); break;
+    case MeshFormat::Medit: files.emplace_back(file, one(detail::medit_text)); break;
+    case MeshFormat::Vtu: files.emplace_back(file, one(detail::vtu_text)); break;
+    case MeshFormat::Gmsh41: files.emplace_back(file, [&mesh](TextOut& out) { detail::gmsh_text(mesh, false, out); }); break;
+    case MeshFormat::Gmsh22: files.emplace_back(file, [&mesh](TextOut& out) { detail::gmsh_text(mesh, true, out); }); break;
+    case MeshFormat::Abaqus: files.emplace_back(file, one(detail::abaqus_text)); break;
     case MeshFormat::TetGen: {
       const auto names = detail::tetgen_names(file);
-      auto texts = detail::tetgen_texts(mesh);
-      files.emplace_back(names.node, std::move(texts.node));
-      files.emplace_back(names.ele, std::move(texts.ele));
-      files.emplace_back(names.face, std::move(texts.face));
+      files.emplace_back(names.node, one(detail::tetgen_node_text));
+      files.emplace_back(names.ele, one(detail::tetgen_ele_text));
+      files.emplace_back(names.face, one(detail::tetgen_face_text));
       break;
     }
   }

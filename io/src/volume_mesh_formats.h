@@ -40,11 +40,25 @@ inline std::array<uint32_t, 3> outward_facet(const uint32_t* t, int i) {
 // tag ranges), so a writer never emits a file its own reader refuses. Throws InputError (Unsupported).
 void check_writable(const VolumeMesh& mesh, const std::string& file);
 
-// Writers: the bytes of the file(s).
-std::string medit_text(const VolumeMesh& mesh);
-std::string vtu_text(const VolumeMesh& mesh);
-std::string gmsh_text(const VolumeMesh& mesh, bool version2);
-std::string abaqus_text(const VolumeMesh& mesh);
+// Writers: the text of the file(s), made piece by piece into `out` (file_io.h: a large mesh's file is
+// written as it is made), or whole as one string.
+void medit_text(const VolumeMesh& mesh, TextOut& out);
+void vtu_text(const VolumeMesh& mesh, TextOut& out);
+void gmsh_text(const VolumeMesh& mesh, bool version2, TextOut& out);
+void abaqus_text(const VolumeMesh& mesh, TextOut& out);
+void tetgen_node_text(const VolumeMesh& mesh, TextOut& out);
+void tetgen_ele_text(const VolumeMesh& mesh, TextOut& out);
+void tetgen_face_text(const VolumeMesh& mesh, TextOut& out);
+template <class... Args>
+std::string whole_text(const VolumeMesh& mesh, void (*writer)(const VolumeMesh&, Args..., TextOut&), Args... args) {
+  TextOut out;
+  writer(mesh, args..., out);
+  return std::move(out.text);
+}
+inline std::string medit_text(const VolumeMesh& mesh) { return whole_text(mesh, medit_text); }
+inline std::string vtu_text(const VolumeMesh& mesh) { return whole_text(mesh, vtu_text); }
+inline std::string gmsh_text(const VolumeMesh& mesh, bool version2) { return whole_text<bool>(mesh, gmsh_text, version2); }
+inline std::string abaqus_text(const VolumeMesh& mesh) { return whole_text(mesh, abaqus_text); }
 // The C3D4 face number (1..4) of the facet without vertex i (sweepcdt order).
 int abaqus_face_without(int i);
 struct TetGenFiles {

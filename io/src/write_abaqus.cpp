@@ -75,12 +75,14 @@ std::string calculix_number(double x) {
 
 int abaqus_face_without(int i) { return kFaceWithout[i]; }
 
-std::string abaqus_text(const VolumeMesh& m) {
-  std::string out = "*HEADING\nsweepcdt volume mesh: C3D4 tetrahedra, ELSET REGION<k> per region, SURFACE BOUNDARY\n*NODE, NSET=NALL\n";
+void abaqus_text(const VolumeMesh& m, TextOut& o) {
+  std::string& out = o.text;
+  out += "*HEADING\nsweepcdt volume mesh: C3D4 tetrahedra, ELSET REGION<k> per region, SURFACE BOUNDARY\n*NODE, NSET=NALL\n";
   for (std::size_t i = 0; i < m.num_points(); ++i) {
     append_int(out, static_cast<int64_t>(i) + 1);
     for (int k = 0; k < 3; ++k) out += ", " + calculix_number(m.points[3 * i + k]);
     out += '\n';
+    o.spill();
   }
   std::map<int32_t, std::vector<std::size_t>> regions;
   for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) regions[m.regions[t]].push_back(t);
@@ -93,9 +95,10 @@ std::string abaqus_text(const VolumeMesh& m) {
         append_int(out, int64_t{v} + 1);
       }
       out += '\n';
+      o.spill();
     }
   }
-  if (m.num_boundary() == 0) return out;
+  if (m.num_boundary() == 0) return;
 
   std::vector<int64_t> nodes(m.boundary.begin(), m.boundary.end());
   std::sort(nodes.begin(), nodes.end());
@@ -119,8 +122,8 @@ std::string abaqus_text(const VolumeMesh& m) {
     if (t == kNone) continue;  // a triangle that bounds no tetrahedron is no element face
     append_int(out, static_cast<int64_t>(t) + 1);
     out += ", S" + std::to_string(kFaceWithout[i]) + "\n";
+    o.spill();
   }
-  return out;
 }
 
 }  // namespace sweepcdt::io::detail

@@ -69,8 +69,9 @@ void triangle_line(std::string& out, const VolumeMesh& m, std::size_t b) {
   out += '\n';
 }
 
-std::string version2(const VolumeMesh& m, const std::map<int64_t, Entity>& volumes) {
-  std::string out = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+void version2(const VolumeMesh& m, const std::map<int64_t, Entity>& volumes, TextOut& o) {
+  std::string& out = o.text;
+  out += "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
   physical_names(out, volumes, m.num_boundary() > 0);
   out += "$Nodes\n";
   append_int(out, static_cast<int64_t>(m.num_points()));
@@ -80,6 +81,7 @@ std::string version2(const VolumeMesh& m, const std::map<int64_t, Entity>& volum
     out += ' ';
     append_point(out, m, i);
     out += '\n';
+    o.spill();
   }
   out += "$EndNodes\n$Elements\n";
   append_int(out, static_cast<int64_t>(m.num_tetrahedra() + m.num_boundary()));
@@ -89,14 +91,15 @@ std::string version2(const VolumeMesh& m, const std::map<int64_t, Entity>& volum
     append_int(out, static_cast<int64_t>(t) + 1);
     out += " 4 2 " + std::to_string(int64_t{m.regions[t]} + 1) + " " + std::to_string(int64_t{m.regions[t]} + 1);
     tet_line(out, m, t);
+    o.spill();
   }
   for (std::size_t b = 0; b < m.num_boundary(); ++b) {
     append_int(out, static_cast<int64_t>(m.num_tetrahedra() + b) + 1);
     out += " 2 2 " + std::to_string(kBoundaryPhysical) + " " + std::to_string(surface_entity(m.boundary_tags[b]));
     triangle_line(out, m, b);
+    o.spill();
   }
   out += "$EndElements\n";
-  return out;
 }
 
 void entity_line(std::string& out, int64_t tag, const Entity& e, int64_t physical) {
@@ -108,9 +111,10 @@ void entity_line(std::string& out, int64_t tag, const Entity& e, int64_t physica
   out += " 1 " + std::to_string(physical) + " 0\n";  // one physical tag, no bounding entities
 }
 
-std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volumes, const std::map<int64_t, Entity>& surfaces) {
+void version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volumes, const std::map<int64_t, Entity>& surfaces, TextOut& o) {
   const std::size_t n = m.num_points(), t = m.num_tetrahedra(), b = m.num_boundary();
-  std::string out = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  std::string& out = o.text;
+  out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   physical_names(out, volumes, b > 0);
   out += "$Entities\n";
   line(out, {0, 0, static_cast<int64_t>(surfaces.size()), static_cast<int64_t>(volumes.size())});
@@ -122,10 +126,14 @@ std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volu
   } else {
     line(out, {1, static_cast<int64_t>(n), 1, static_cast<int64_t>(n)});
     line(out, {3, volumes.empty() ? 1 : volumes.begin()->first, 0, static_cast<int64_t>(n)});
-    for (std::size_t i = 0; i < n; ++i) line(out, {static_cast<int64_t>(i) + 1});
+    for (std::size_t i = 0; i < n; ++i) {
+      line(out, {static_cast<int64_t>(i) + 1});
+      o.spill();
+    }
     for (std::size_t i = 0; i < n; ++i) {
       append_point(out, m, i);
       out += '\n';
+      o.spill();
     }
   }
   out += "$EndNodes\n$Elements\n";
@@ -138,6 +146,7 @@ std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volu
     for (std::size_t k : e.elements) {
       append_int(out, static_cast<int64_t>(k) + 1);
       tet_line(out, m, k);
+      o.spill();
     }
   }
   for (const auto& [tag, e] : surfaces) {
@@ -145,15 +154,15 @@ std::string version41(const VolumeMesh& m, const std::map<int64_t, Entity>& volu
     for (std::size_t k : e.elements) {
       append_int(out, static_cast<int64_t>(t + k) + 1);
       triangle_line(out, m, k);
+      o.spill();
     }
   }
   out += "$EndElements\n";
-  return out;
 }
 
 }  // namespace
 
-std::string gmsh_text(const VolumeMesh& m, bool v2) {
+void gmsh_text(const VolumeMesh& m, bool v2, TextOut& o) {
   std::map<int64_t, Entity> volumes, surfaces;  // by entity tag, so the file lists them in order
   for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) {
     Entity& e = volumes[int64_t{m.regions[t]} + 1];
@@ -167,7 +176,8 @@ std::string gmsh_text(const VolumeMesh& m, bool v2) {
   }
   // Version 4.1 classifies every node on an entity: points without tetrahedra need a volume too.
   if (!v2 && volumes.empty() && m.num_points() > 0) volumes[1];
-  return v2 ? version2(m, volumes) : version41(m, volumes, surfaces);
+  if (v2) version2(m, volumes, o);
+  else version41(m, volumes, surfaces, o);
 }
 
 }  // namespace sweepcdt::io::detail

@@ -7,8 +7,9 @@
 
 namespace sweepcdt::io::detail {
 
-std::string medit_text(const VolumeMesh& m) {
-  std::string out = "MeshVersionFormatted 2\nDimension 3\n\nVertices\n";
+void medit_text(const VolumeMesh& m, TextOut& o) {
+  std::string& out = o.text;
+  out += "MeshVersionFormatted 2\nDimension 3\n\nVertices\n";
   append_int(out, static_cast<int64_t>(m.num_points()));
   out += '\n';
   for (std::size_t i = 0; i < m.num_points(); ++i) {
@@ -16,6 +17,7 @@ std::string medit_text(const VolumeMesh& m) {
     out += ' ';
     append_int(out, file_tag(point_triangle(m, i)));
     out += '\n';
+    o.spill();
   }
   out += "\nTetrahedra\n";
   append_int(out, static_cast<int64_t>(m.num_tetrahedra()));
@@ -27,6 +29,7 @@ std::string medit_text(const VolumeMesh& m) {
     }
     append_int(out, int64_t{m.regions[t]} + 1);
     out += '\n';
+    o.spill();
   }
   if (m.num_boundary() > 0) {
     out += "\nTriangles\n";
@@ -39,10 +42,10 @@ std::string medit_text(const VolumeMesh& m) {
       }
       append_int(out, file_tag(m.boundary_tags[b]));
       out += '\n';
+      o.spill();
     }
   }
   out += "\nEnd\n";
-  return out;
 }
 
 }  // namespace sweepcdt::io::detail

@@ -11,40 +11,54 @@
 
 namespace sweepcdt::io::detail {
 
-TetGenFiles tetgen_texts(const VolumeMesh& m) {
-  TetGenFiles f;
-  f.node = std::to_string(m.num_points()) + " 3 0 1\n";
+void tetgen_node_text(const VolumeMesh& m, TextOut& o) {
+  std::string& out = o.text;
+  out += std::to_string(m.num_points()) + " 3 0 1\n";
   for (std::size_t i = 0; i < m.num_points(); ++i) {
-    append_int(f.node, static_cast<int64_t>(i) + 1);
-    f.node += ' ';
-    append_point(f.node, m, i);
-    f.node += ' ';
-    append_int(f.node, file_tag(point_triangle(m, i)));
-    f.node += '\n';
+    append_int(out, static_cast<int64_t>(i) + 1);
+    out += ' ';
+    append_point(out, m, i);
+    out += ' ';
+    append_int(out, file_tag(point_triangle(m, i)));
+    out += '\n';
+    o.spill();
   }
-  f.ele = std::to_string(m.num_tetrahedra()) + " 4 1\n";
+}
+
+void tetgen_ele_text(const VolumeMesh& m, TextOut& o) {
+  std::string& out = o.text;
+  out += std::to_string(m.num_tetrahedra()) + " 4 1\n";
   for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) {
-    append_int(f.ele, static_cast<int64_t>(t) + 1);
+    append_int(out, static_cast<int64_t>(t) + 1);
     for (uint32_t v : file_order(&m.tetrahedra[4 * t])) {
-      f.ele += ' ';
-      append_int(f.ele, int64_t{v} + 1);
+      out += ' ';
+      append_int(out, int64_t{v} + 1);
     }
-    f.ele += ' ';
-    append_int(f.ele, int64_t{m.regions[t]} + 1);
-    f.ele += '\n';
+    out += ' ';
+    append_int(out, int64_t{m.regions[t]} + 1);
+    out += '\n';
+    o.spill();
   }
-  f.face = std::to_string(m.num_boundary()) + " 1\n";
+}
+
+void tetgen_face_text(const VolumeMesh& m, TextOut& o) {
+  std::string& out = o.text;
+  out += std::to_string(m.num_boundary()) + " 1\n";
   for (std::size_t b = 0; b < m.num_boundary(); ++b) {
-    append_int(f.face, static_cast<int64_t>(b) + 1);
+    append_int(out, static_cast<int64_t>(b) + 1);
     for (int k = 0; k < 3; ++k) {
-      f.face += ' ';
-      append_int(f.face, int64_t{m.boundary[3 * b + k]} + 1);
+      out += ' ';
+      append_int(out, int64_t{m.boundary[3 * b + k]} + 1);
     }
-    f.face += ' ';
-    append_int(f.face, file_tag(m.boundary_tags[b]));
-    f.face += '\n';
+    out += ' ';
+    append_int(out, file_tag(m.boundary_tags[b]));
+    out += '\n';
+    o.spill();
   }
-  return f;
+}
+
+TetGenFiles tetgen_texts(const VolumeMesh& m) {
+  return {whole_text(m, tetgen_node_text), whole_text(m, tetgen_ele_text), whole_text(m, tetgen_face_text)};
 }
 
 }  // namespace sweepcdt::io::detail

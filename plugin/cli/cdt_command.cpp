@@ -116,7 +116,7 @@ void triangulate(const Plc<D>& plc, const std::string& output, const OutputForma
   writing = true;
   if constexpr (D == 3) {
     if (format.volume) {
-      const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
+      const io::VolumeMesh mesh = counted_volume_mesh(std::move(tri), triangulated, r);
       io::write_volume_mesh(output, mesh, *format.volume);
       r.seconds_write = since(t);
       if (*format.volume == io::MeshFormat::Abaqus) warn_if_rounded(output, mesh, r);

@@ -69,11 +69,11 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
 
     const Options cdt_options = core_options(options, &r.cdt, progress.callback());
     Plc<3> triangulated;
-    const Triangulation<3> tri = cdt(plc, cdt_options, &triangulated);
+    Triangulation<3> tri = cdt(plc, cdt_options, &triangulated);
     r.computed = true;
     r.simplices = tri.num_simplices();
 
-    const io::VolumeMesh mesh = counted_volume_mesh(tri, triangulated, r);
+    const io::VolumeMesh mesh = counted_volume_mesh(std::move(tri), triangulated, r);
     if (options.check && !verify_before_writing(plc, mesh, cdt_options.facets, progress, r)) {
       r.seconds_total = since(start);
       return r;
@@ -101,8 +101,8 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
   return r;
 }
 
-io::VolumeMesh counted_volume_mesh(const Triangulation<3>& tri, const Plc<3>& triangulated, FileResult& r) {
-  io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
+io::VolumeMesh counted_volume_mesh(Triangulation<3> tri, const Plc<3>& triangulated, FileResult& r) {
+  io::VolumeMesh mesh = io::volume_mesh_of(std::move(tri), triangulated);
   r.boundary_triangles = mesh.num_boundary();
   r.regions = std::set<int32_t>(mesh.regions.begin(), mesh.regions.end()).size();
   return mesh;

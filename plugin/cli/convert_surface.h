@@ -24,7 +24,7 @@ FileResult convert_surface(const std::string& input, const std::vector<MeshTarge
                            FileProgress& progress);
 
 // The volume mesh of a CDT, with its boundary triangles and regions counted in `r`.
-io::VolumeMesh counted_volume_mesh(const Triangulation<3>& tri, const Plc<3>& triangulated, FileResult& r);
+io::VolumeMesh counted_volume_mesh(Triangulation<3> tri, const Plc<3>& triangulated, FileResult& r);
 
 // After writing `mesh` to the Abaqus file `file`: a warning in `r` if coordinates had to be rounded.
 void warn_if_rounded(const std::string& file, const io::VolumeMesh& mesh, FileResult& r);

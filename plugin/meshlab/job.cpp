@@ -180,7 +180,7 @@ JobResult run_job(const JobInput& in) {
       return true;
     };
     Plc<3> triangulated;
-    const Triangulation<3> tri = cdt(plc, options, &triangulated);
+    Triangulation<3> tri = cdt(plc, options, &triangulated);
     if (in.verify) {
       progress(85, "verifying");
       const ValidationReport v = validate_triangulated(tri, triangulated);
@@ -190,7 +190,7 @@ JobResult run_job(const JobInput& in) {
       }
     }
     progress(90, "writing");
-    const io::VolumeMesh mesh = io::volume_mesh_of(tri, triangulated);
+    const io::VolumeMesh mesh = io::volume_mesh_of(std::move(tri), triangulated);
     io::write_volume_mesh(in.output, mesh, *format);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

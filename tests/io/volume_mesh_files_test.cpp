@@ -7,6 +7,7 @@
 
 #include "io_test_util.h"
 #include "sweepcdt/io/volume_mesh.h"
+#include "volume_mesh_formats.h"
 #include "sweepcdt/predicates/orientation.h"
 
 namespace sweepcdt::io {
@@ -181,6 +182,53 @@ TEST(VolumeMeshWrite, UntaggedBoundaryAndEmptyMeshRoundTrip) {
     const VolumeMesh empty = read_volume_mesh(empty_file);
     EXPECT_EQ(empty.num_points() + empty.num_tetrahedra() + empty.num_boundary(), 0u);
   }
+}
+
+// A mesh whose files run to megabytes: the writers hand their text to the file a megabyte at a time
+// (TextOut::spill), and every file must hold exactly the text the writer makes as one string.
+TEST(VolumeMeshWrite, LargeFilesWrittenPieceByPieceHoldTheWholeText) {
+  VolumeMesh m;
+  const uint32_t k = 32;  // k^3 grid points, six tetrahedra per cell
+  const auto id = [&](uint32_t x, uint32_t y, uint32_t z) { return (z * k + y) * k + x; };
+  for (uint32_t z = 0; z < k; ++z)
+    for (uint32_t y = 0; y < k; ++y)
+      for (uint32_t x = 0; x < k; ++x) m.points.insert(m.points.end(), {x * 0.1, y * 0.1 + 1e-9 * x, z * 0.1});
+  m.num_input_points = k * k * k / 2;
+  for (uint32_t z = 0; z + 1 < k; ++z)
+    for (uint32_t y = 0; y + 1 < k; ++y)
+      for (uint32_t x = 0; x + 1 < k; ++x)
+        for (int t = 0; t < 6; ++t) {
+          m.tetrahedra.insert(m.tetrahedra.end(), {id(x, y, z), id(x + 1, y, z + (t & 1)), id(x, y + 1, z + (t >> 1 & 1)), id(x + 1, y + 1, z + 1)});
+          m.regions.push_back(t % 3);
+        }
+  for (uint32_t y = 0; y + 1 < k; ++y)
+    for (uint32_t x = 0; x + 1 < k; ++x) {
+      m.boundary.insert(m.boundary.end(), {id(x, y, 0), id(x, y + 1, 0), id(x + 1, y, 0)});
+      m.boundary_tags.push_back(x % 2 ? kNone : y);
+    }
+  m.on_triangle.assign(m.num_points(), kNone);
+  for (std::size_t i = m.num_input_points; i < m.num_points(); ++i) m.on_triangle[i] = static_cast<uint32_t>(i % 7);
+  TempDir dir;
+  const auto check = [&](const std::filesystem::path& file, const std::string& whole) {
+    EXPECT_GT(whole.size(), std::size_t{1} << 20) << file;  // more than one piece
+    EXPECT_TRUE(slurp(file) == whole) << file;
+  };
+  write_volume_mesh(dir.path() / "big.mesh", m, MeshFormat::Medit);
+  check(dir.path() / "big.mesh", detail::medit_text(m));
+  write_volume_mesh(dir.path() / "big.vtu", m, MeshFormat::Vtu);
+  check(dir.path() / "big.vtu", detail::vtu_text(m));
+  write_volume_mesh(dir.path() / "big.msh", m, MeshFormat::Gmsh41);
+  check(dir.path() / "big.msh", detail::gmsh_text(m, false));
+  write_volume_mesh(dir.path() / "big2.msh", m, MeshFormat::Gmsh22);
+  check(dir.path() / "big2.msh", detail::gmsh_text(m, true));
+  write_volume_mesh(dir.path() / "big.inp", m, MeshFormat::Abaqus);
+  check(dir.path() / "big.inp", detail::abaqus_text(m));
+  write_volume_mesh(dir.path() / "big.node", m, MeshFormat::TetGen);
+  const detail::TetGenFiles tetgen = detail::tetgen_texts(m);
+  check(dir.path() / "big.node", tetgen.node);
+  check(dir.path() / "big.ele", tetgen.ele);
+  EXPECT_TRUE(slurp(dir.path() / "big.face") == tetgen.face);
+  EXPECT_EQ(listing(dir.path()).size(), 8u);  // no temporary left
 }
 
 // Reads `text` as `name`: an InputError of `kind` whose message names the file and says `where`.

@@ -40,7 +40,7 @@ SurfaceRun run_surface(const io::Soup& soup, const RunKeywords& k, Watch& watch)
   options.statistics = &run.cdt;
   options.progress = watch.core_callback();
   Plc<3> triangulated;
-  const Triangulation<3> tri = cdt(plc, options, &triangulated);
+  Triangulation<3> tri = cdt(plc, options, &triangulated);
 
   if (k.check) {
     watch.phase("validating");
@@ -52,7 +52,7 @@ SurfaceRun run_surface(const io::Soup& soup, const RunKeywords& k, Watch& watch)
     run.validated = true;
   }
   watch.phase("volume mesh");
-  run.mesh = io::volume_mesh_of(tri, triangulated);
+  run.mesh = io::volume_mesh_of(std::move(tri), triangulated);
   run.seconds_total = since(start);
   return run;
 }
