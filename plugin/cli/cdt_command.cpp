@@ -79,7 +79,7 @@ void delete_vertices(Triangulation<D>& tri, Plc<D>& plc, const std::vector<uint3
   }
   r.warnings.push_back(r.input + ": " + std::to_string(deleted) + " of " + std::to_string(ids.size()) +
                        " vertices deleted (--delete; the output numbers the vertices left in their order)");
-  auto snapshot = mesh.snapshot();
+  auto snapshot = std::move(mesh).release();
   tri = std::move(snapshot.triangulation);
   plc = std::move(snapshot.plc);
 }
