@@ -82,22 +82,20 @@ void write_files_atomically(const std::vector<std::pair<std::filesystem::path, T
     const int fd = create_temporary(target, temporary);
     if (fd < 0) give_up(target, std::strerror(errno));
     temporaries.push_back(temporary);
-    bool written = true;
-    int write_errno = 0;
     TextOut out;
     out.flush = [&](const std::string& bytes) {
-      if (written && !write_all(fd, bytes)) written = false, write_errno = errno;
+      if (!write_all(fd, bytes)) give_up(target, std::strerror(errno));  // a full disk: stop at once
     };
     try {
       make(out);
-    } catch (...) {  // the writer's own error (memory): nothing left behind
+      out.flush(out.text);
+    } catch (...) {  // that, or the writer's own error (memory): nothing left behind
       ::close(fd);
       remove_temporaries();
       throw;
     }
-    out.flush(out.text);
     // close() reports delayed write errors (NFS, full disks), so it decides too.
-    if (::close(fd) != 0 || !written) give_up(target, std::strerror(written ? errno : write_errno));
+    if (::close(fd) != 0) give_up(target, std::strerror(errno));
   }
   // A folder under a target name would make its rename fail; find out before renaming any, so a set
   // of files is not left half replaced for that (the common) reason.

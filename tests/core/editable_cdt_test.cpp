@@ -695,11 +695,18 @@ TEST(EditableCdt, ReleaseGivesWhatSnapshotGives) {
     EXPECT_EQ(own.plc.exterior, copy.plc.exterior);
     EXPECT_EQ(own.plc.tags, copy.plc.tags);
     EXPECT_EQ(own.plc.region_seeds.size(), copy.plc.region_seeds.size());
-    // And the snapshot is the CDT of its PLC, as cdt() computes it from scratch.
+    // Checked apart from the shared assembly: each vertex left is the point it was, numbered in
+    // the same order, and the snapshot is a valid CDT of its PLC, the one cdt() computes from scratch.
+    ASSERT_EQ(own.triangulation.num_points(), own.old_ids.size());
+    for (std::size_t i = 0; i < own.old_ids.size(); ++i) {
+      if (i > 0) EXPECT_LT(own.old_ids[i - 1], own.old_ids[i]);
+      EXPECT_TRUE(std::equal(refined.point(own.old_ids[i]), refined.point(own.old_ids[i]) + 3, own.triangulation.points.data() + 3 * i)) << i;
+    }
     Triangulation<3> whole = own.triangulation;
     whole.num_input_points = static_cast<uint32_t>(own.plc.num_points());
     whole.steiner_on.clear();
     EXPECT_TRUE(validate(whole, own.plc).ok());
+    EXPECT_EQ(fixtures::simplex_set(own.triangulation), fixtures::simplex_set(cdt(own.plc)));
   }
 }
 

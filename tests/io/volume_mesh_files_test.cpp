@@ -2,6 +2,9 @@
 // names, and the readers' answers to malformed and hostile files (InputError with file and line).
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -184,9 +187,9 @@ TEST(VolumeMeshWrite, UntaggedBoundaryAndEmptyMeshRoundTrip) {
   }
 }
 
-// A mesh whose files run to megabytes: the writers hand their text to the file a megabyte at a time
-// (TextOut::spill), and every file must hold exactly the text the writer makes as one string.
-TEST(VolumeMeshWrite, LargeFilesWrittenPieceByPieceHoldTheWholeText) {
+// A mesh whose files run to megabytes: a grid of k^3 points, six tetrahedra per cell (their
+// orientation does not matter to the writers), three regions, a tagged bottom.
+VolumeMesh large_grid_mesh() {
   VolumeMesh m;
   const uint32_t k = 32;  // k^3 grid points, six tetrahedra per cell
   const auto id = [&](uint32_t x, uint32_t y, uint32_t z) { return (z * k + y) * k + x; };
@@ -208,6 +211,13 @@ TEST(VolumeMeshWrite, LargeFilesWrittenPieceByPieceHoldTheWholeText) {
     }
   m.on_triangle.assign(m.num_points(), kNone);
   for (std::size_t i = m.num_input_points; i < m.num_points(); ++i) m.on_triangle[i] = static_cast<uint32_t>(i % 7);
+  return m;
+}
+
+// A mesh whose files run to megabytes: the writers hand their text to the file a megabyte at a time
+// (TextOut::spill), and every file must hold exactly the text the writer makes as one string.
+TEST(VolumeMeshWrite, LargeFilesWrittenPieceByPieceHoldTheWholeText) {
+  const VolumeMesh m = large_grid_mesh();
   TempDir dir;
   const auto check = [&](const std::filesystem::path& file, const std::string& whole) {
     EXPECT_GT(whole.size(), std::size_t{1} << 20) << file;  // more than one piece
@@ -229,6 +239,39 @@ TEST(VolumeMeshWrite, LargeFilesWrittenPieceByPieceHoldTheWholeText) {
   check(dir.path() / "big.ele", tetgen.ele);
   EXPECT_TRUE(slurp(dir.path() / "big.face") == tetgen.face);
   EXPECT_EQ(listing(dir.path()).size(), 8u);  // no temporary left
+}
+
+// A write that fails in the middle of a file (here the file-size limit, as a full disk would): the
+// writer stops there, InputError names the file, and no temporary is left. The limit is the
+// process's own for the test's length (SIGXFSZ ignored, so write() fails with EFBIG).
+TEST(VolumeMeshWrite, FailureInTheMiddleOfAFileLeavesNothing) {
+  const VolumeMesh m = large_grid_mesh();
+  TempDir dir;
+  struct FileSizeLimit {  // restored however the test ends
+    rlimit before{};
+    void (*handler)(int) = std::signal(SIGXFSZ, SIG_IGN);
+    explicit FileSizeLimit(rlim_t bytes) {
+      getrlimit(RLIMIT_FSIZE, &before);
+      rlimit small = before;
+      small.rlim_cur = bytes;
+      setrlimit(RLIMIT_FSIZE, &small);
+    }
+    ~FileSizeLimit() {
+      setrlimit(RLIMIT_FSIZE, &before);
+      std::signal(SIGXFSZ, handler);
+    }
+  } limit(3 << 20);  // past the first pieces, short of each file but TetGen's .node (its .ele fails)
+  for (const MeshFormat f : {MeshFormat::Medit, MeshFormat::Vtu, MeshFormat::TetGen}) {
+    SCOPED_TRACE(to_string(f));
+    const auto file = dir.path() / (std::string("full.") + (f == MeshFormat::TetGen ? "node" : to_string(f)));
+    try {
+      write_volume_mesh(file, m, f);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot write"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(listing(dir.path()).empty());
+  }
 }
 
 // Reads `text` as `name`: an InputError of `kind` whose message names the file and says `where`.
