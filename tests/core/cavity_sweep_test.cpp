@@ -16,6 +16,9 @@
 #include "cavity/disturbed.h"
 #include "delaunay/delaunay.h"
 #include "facets.h"
+#include "gift_wrap.h"
+#include "sweep/sweep_cdt.h"
+#include "sweepcdt/validate.h"
 #include "simplex_interior.h"
 #include "simplex_intersection.h"
 #include "integer_sphere.h"
@@ -316,3 +319,38 @@ TEST(CavitySweep, ReportsTheCavitiesWithoutACdt) {
 }
 
 }  // namespace
+
+// A cavity's sweep (sweep_cavity): the sweep plane along the axis where it is thinnest, the axes
+// turned for it. A flat box with points inside and a refined comb (a PLC with a CDT), each thinnest
+// along each axis in turn (coordinates permuted cyclically: the same shape turned): the sweep
+// sphere's CDT of the same PLC, each simplex positively oriented in the PLC's own coordinates
+// (validate()), the plane along that axis.
+TEST(CavitySweep, CavitiesSweptAlongTheirThinnestAxisAsTheSphereSweepsThem) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  Plc<3> box = fixtures::unit_cube_surface();
+  for (int i = 0; i < 3 * 150; ++i) box.points.push_back(u(rng));
+  for (std::size_t x = 0; x < box.num_points(); ++x) box.points[3 * x + 2] *= 0.125;  // thinnest along z
+  Plc<3> comb;  // thinnest along z: 5 by 4 by 2
+  Options refine = mesh_defaults();
+  refine.remove_steiner_points = false;
+  cdt(fixtures::extruded_columns({0, 1, 1.2, 3, 3.1, 5}, {3, 0.5, 3, 0.2, 4}, 2), refine, &comb);
+  int swept = 0;
+  for (const auto& [what, plc] : {std::pair{"flat box with points", box}, std::pair{"refined comb", comb}})
+    for (int axis = 0; axis < 3; ++axis) {
+      Plc<3> turned = plc;  // z moved to `axis`
+      for (std::size_t x = 0; x < plc.num_points(); ++x)
+        for (int k = 0; k < 3; ++k) turned.points[3 * x + (k + axis + 1) % 3] = plc.points[3 * x + k];
+      CdtStatistics stats;
+      const Triangulation<3> sphere = detail::sweep_cdt<3>(turned, detail::seed_simplex(turned), Options{}, stats);
+      int along = -1;
+      Triangulation<3> plane = detail::sweep_cavity<3>(turned, Options{}, stats, &along);
+      EXPECT_EQ(along, axis) << what;
+      EXPECT_EQ(fixtures::simplex_set(plane), fixtures::simplex_set(sphere)) << what << ", thinnest along axis " << axis;
+      compute_neighbors(plane);
+      const ValidationReport report = validate(plane, turned);
+      EXPECT_TRUE(report.ok()) << what << ", thinnest along axis " << axis << "\n" << report.summary();
+      swept += report.ok();
+    }
+  EXPECT_EQ(swept, 6);
+}

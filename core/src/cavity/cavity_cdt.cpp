@@ -118,7 +118,7 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
     const Plc<D>& plc = cavities.parts[c].plc;
     Swept& part = swept[c];
     try {
-      Triangulation<D> tri = sweep_cdt<D>(plc, seed_simplex(plc), each, part.stats);
+      Triangulation<D> tri = sweep_cavity<D>(plc, each, part.stats);
       // Without a CDT the sweep can also end with a triangulation that is none (a triangular
       // bipyramid whose two constraints meet at an edge that is not Delaunay: two tetrahedra, not
       // locally Delaunay between them); validate() finds that later, for the whole. Lazy refinement
@@ -153,6 +153,31 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
 }
 
 }  // namespace
+
+template <int D>
+Triangulation<D> sweep_cavity(const Plc<D>& plc, const Options& options, CdtStatistics& stats, int* along) {
+  if constexpr (D == 3) {
+    std::array<double, D> lo, hi;
+    for (int k = 0; k < D; ++k) lo[k] = hi[k] = plc.points[k];
+    for (std::size_t x = 1; x < plc.num_points(); ++x)
+      for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], plc.point(x)[k]), hi[k] = std::max(hi[k], plc.point(x)[k]);
+    int axis = 0;
+    for (int k = 1; k < D; ++k)
+      if (hi[k] - lo[k] < hi[axis] - lo[axis]) axis = k;
+    if (along) *along = axis;
+    if (axis == 0) return sweep_cdt<D>(plc, std::nullopt, options, stats);
+    // (x, y, z) -> (y, z, x) or (z, x, y): a cyclic permutation of three axes is even.
+    Plc<D> turned = plc;
+    for (std::size_t x = 0; x < plc.num_points(); ++x)
+      for (int k = 0; k < D; ++k) turned.points[x * D + k] = plc.points[x * D + (k + axis) % D];
+    Triangulation<D> tri = sweep_cdt<D>(turned, std::nullopt, options, stats);
+    tri.points = plc.points;
+    return tri;
+  } else {
+    if (along) *along = -1;
+    return sweep_cdt<D>(plc, seed_simplex(plc), options, stats);
+  }
+}
 
 template <int D>
 std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& options, CdtStatistics& stats,
@@ -195,10 +220,15 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
   std::vector<uint32_t> cavity_simplices;
   std::vector<uint32_t> cavity_of;  // per cavity simplex, with failed_edges: its cavity
   bool failed = false;
+  // The sweeps' counters are counted only when every cavity was swept: after a failure, which of the
+  // others the threads swept before they stopped depends on the timing.
+  if (failed_edges || std::none_of(swept.begin(), swept.end(), [](const Swept& part) { return part.failed; }))
+    for (const Swept& part : swept) {
+      stats.queue_pushes += part.stats.queue_pushes, stats.queue_pops += part.stats.queue_pops;
+      stats.stale_pops += part.stats.stale_pops, stats.drop_moves += part.stats.drop_moves;
+    }
   for (std::size_t c = 0; c < cavities.parts.size(); ++c) {
     Swept& part = swept[c];
-    stats.queue_pushes += part.stats.queue_pushes, stats.queue_pops += part.stats.queue_pops;
-    stats.stale_pops += part.stats.stale_pops, stats.drop_moves += part.stats.drop_moves;
     if (part.failed) {
       // The PLC has no CDT: the whole sweep finds out again and names a witness.
       if (!failed_edges) return std::nullopt;
@@ -222,6 +252,10 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
   return std::nullopt;
 }
 
+template Triangulation<2> sweep_cavity<2>(const Plc<2>&, const Options&, CdtStatistics&, int*);
+template Triangulation<3> sweep_cavity<3>(const Plc<3>&, const Options&, CdtStatistics&, int*);
+template Triangulation<4> sweep_cavity<4>(const Plc<4>&, const Options&, CdtStatistics&, int*);
+template Triangulation<5> sweep_cavity<5>(const Plc<5>&, const Options&, CdtStatistics&, int*);
 template std::optional<Triangulation<2>> cavity_cdt<2>(const Plc<2>&, const Options&, CdtStatistics&, const DelaunayMesh*,
                                                           std::vector<std::array<uint32_t, 2>>*, const std::function<void()>&);
 template std::optional<Triangulation<3>> cavity_cdt<3>(const Plc<3>&, const Options&, CdtStatistics&, const DelaunayMesh*,
