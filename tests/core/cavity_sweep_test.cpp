@@ -318,8 +318,6 @@ TEST(CavitySweep, ReportsTheCavitiesWithoutACdt) {
   EXPECT_TRUE(failed.empty());
 }
 
-}  // namespace
-
 // A cavity's sweep (sweep_cavity): the sweep plane along the axis where it is thinnest, the axes
 // turned for it. A flat box with points inside and a refined comb (a PLC with a CDT), each thinnest
 // along each axis in turn (coordinates permuted cyclically: the same shape turned): the sweep
@@ -354,3 +352,5 @@ TEST(CavitySweep, CavitiesSweptAlongTheirThinnestAxisAsTheSphereSweepsThem) {
     }
   EXPECT_EQ(swept, 6);
 }
+
+}  // namespace

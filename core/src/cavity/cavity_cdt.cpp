@@ -157,8 +157,8 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
 template <int D>
 Triangulation<D> sweep_cavity(const Plc<D>& plc, const Options& options, CdtStatistics& stats, int* along) {
   if constexpr (D == 3) {
-    std::array<double, D> lo, hi;
-    for (int k = 0; k < D; ++k) lo[k] = hi[k] = plc.points[k];
+    std::array<double, D> lo{}, hi{};
+    if (!plc.points.empty()) std::copy_n(plc.points.begin(), D, lo.begin()), std::copy_n(plc.points.begin(), D, hi.begin());
     for (std::size_t x = 1; x < plc.num_points(); ++x)
       for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], plc.point(x)[k]), hi[k] = std::max(hi[k], plc.point(x)[k]);
     int axis = 0;

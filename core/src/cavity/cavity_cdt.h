@@ -8,7 +8,7 @@
 //      constraint, from the hull and from the constraints' exterior notations (domain_sides.h);
 //   4. the rest of the domain — the cavities — as a PLC of its own: the facets between kept and
 //      cavity tetrahedra notated with the kept side exterior, and the constraints in the cavities
-//      (cavity_plc.h), one per cavity; their CDTs by the sweep sphere (§3);
+//      (cavity_plc.h), one per cavity; their CDTs by SWEEPCDT (§3: sweep_cavity, below);
 //   5. the kept tetrahedra and the cavities' together.
 // Why that is the CDT, when the PLC has one: a kept tetrahedron has an empty (perturbed) circumsphere
 // and meets the constraints only in common faces, so it is constrained Delaunay, and under the
@@ -55,7 +55,7 @@ std::optional<Triangulation<D>> cavity_cdt(const Plc<D>& plc, const Options& opt
 // gets the axis). A vertex's drop face is the first face its ray along -x_1 strikes: across a thin
 // or long cavity (a thin wall's, a long segment's) the ray meets the boxes of few faces, where the
 // sweep sphere's rays toward its seed run along it (pipe_tee_fine: the cavity sweep 0.57 s -> 0.32
-// s, 74% of its sweeps' time was drop-face rays). Elsewhere the sweep sphere from a seed simplex
+// s; 72% of its sweeps' samples were drop-face rays). Elsewhere the sweep sphere from a seed simplex
 // (`along` -1). The CDT is the same either way (unique under the perturbation); the order of its
 // simplices is not.
 template <int D>
