@@ -55,6 +55,8 @@ std::string algorithm_choices();
 struct CdtStatistics {
   Algorithm algorithm = Algorithm::CavitySweep;  // the one that actually ran
   uint64_t simplices = 0;
+  // The sweeps' counters. Of the cavity sweep's, only when every cavity was swept (after one finds no
+  // CDT the others stop, as far as the threads got; the whole PLC's sweep counts instead).
   uint64_t queue_pushes = 0, queue_pops = 0, stale_pops = 0;  // sweeps: priority-queue operations
   uint64_t drop_moves = 0;  // sweeps: vertices moved between drop lists, the paper's sum of drop(f)
   // CavitySweep: constraints that are no face of the Delaunay tetrahedralization, and its tetrahedra

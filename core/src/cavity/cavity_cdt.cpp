@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <thread>
 
 #include "sweepcdt/predicates/perturbation.h"
@@ -157,9 +158,10 @@ std::vector<Swept> sweep_each(const Cavities<D>& cavities, const Options& option
 template <int D>
 Triangulation<D> sweep_cavity(const Plc<D>& plc, const Options& options, CdtStatistics& stats, int* along) {
   if constexpr (D == 3) {
-    std::array<double, D> lo{}, hi{};
-    if (!plc.points.empty()) std::copy_n(plc.points.begin(), D, lo.begin()), std::copy_n(plc.points.begin(), D, hi.begin());
-    for (std::size_t x = 1; x < plc.num_points(); ++x)
+    std::array<double, D> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t x = 0; x < plc.num_points(); ++x)
       for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], plc.point(x)[k]), hi[k] = std::max(hi[k], plc.point(x)[k]);
     int axis = 0;
     for (int k = 1; k < D; ++k)
