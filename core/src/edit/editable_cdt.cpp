@@ -22,6 +22,7 @@
 #include "blocked_segment.h"
 #include "sheets.h"
 #include "sorted_keys.h"
+#include "star_fill.h"
 #include "sweepcdt/predicates/orientation.h"
 #include "sweepcdt/predicates/perturbation.h"
 
@@ -522,14 +523,19 @@ struct EditableCdt<D>::Impl {
       p.refused = true;
       return;
     }
-    compute_neighbors(fill);
-    if (on_hull && fill.num_simplices() == 0 && live_simplices == star.size())
-      throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the points left span no " + std::to_string(D) + "-dimensional simplex");
-    const Plc<D> region = on_hull ? closed_over_new_hull(v, cavity, fill, added.size()) : Plc<D>{};
-    if (!on_hull || fill.num_simplices() > 0) {  // on the hull the star may just vanish (its link faces become hull)
-      const ValidationReport report = validate(fill, on_hull ? region : cavity);
-      if (!report.ok())
-        no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
+    if (!on_hull) {
+      const std::string failure = detail::check_star_fill(fill, cavity);  // validate()'s verdict, for a star (and the neighbours)
+      if (!failure.empty()) no_cdt(v, "the cavity's triangulation fails validation (" + failure + ")", {});
+    } else {
+      compute_neighbors(fill);
+      if (fill.num_simplices() == 0 && live_simplices == star.size())
+        throw VertexRemovalError("vertex " + std::to_string(v) + " cannot be deleted: the points left span no " + std::to_string(D) + "-dimensional simplex");
+      const Plc<D> region = closed_over_new_hull(v, cavity, fill, added.size());
+      if (fill.num_simplices() > 0) {  // on the hull the star may just vanish (its link faces become hull)
+        const ValidationReport report = validate(fill, region);
+        if (!report.ok())
+          no_cdt(v, "the cavity's triangulation fails validation (" + report.failures.front().check + ": " + report.failures.front().detail + ")", {});
+      }
     }
     for (uint32_t& x : fill.simplices) x = ids[x];
     p.wiring = wire(fill, link, added);
