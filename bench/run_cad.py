@@ -10,7 +10,7 @@ whole process (reading and writing included) for
 
 and the ratios. Medians of --repeat runs (default 1). Prints a Markdown table and the totals.
 
-Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more | --scad | --scan] [FILE...]
+Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --more | --scad | --scan | --decimated] [FILE...]
        bench/run_cad.py --before BUILD_BEFORE [--build BUILD] [--repeat N] [FILE...]
   (default files: tests/data/cad/*.stl, *.obj, *.ply and the closed shared meshes)
   --noise: instead, CAD parts with rounding noise added (NOISY: the cases of
@@ -23,6 +23,8 @@ Usage: bench/run_cad.py [--build BUILD] [--repeat N] [--noise | --rotated | --mo
            STL with 6 significant digits, as 3D-print models are shared: double coordinates)
   --scan: instead, surfaces like scans' (tests/data/scan/make_scan_surfaces.py): marching-tetrahedra
            isosurfaces (metaballs, a gyroid lattice; slivers) at grids 16 and 40, a bumpy shell
+  --decimated: instead, the fine CAD parts of tests/data/cad decimated to 10% and 30% by MeshLab's
+           quadric edge collapse (bench/make_decimated_surfaces.py), as MeshLab users simplify surfaces
 
 With --before, only the default command is timed, of both builds in turn (before, after, before,
 after, ... --repeat pairs, default 5): per input the median seconds of each and the median of the
@@ -184,6 +186,7 @@ def main():
     ap.add_argument("--more", action="store_true", help="more FreeCAD parts (bench/make_more_cad_parts.py)")
     ap.add_argument("--scad", action="store_true", help="OpenSCAD parts (tests/data/scad), exported by openscad")
     ap.add_argument("--scan", action="store_true", help="scan-like surfaces (tests/data/scan/make_scan_surfaces.py)")
+    ap.add_argument("--decimated", action="store_true", help="CAD parts decimated by MeshLab (bench/make_decimated_surfaces.py)")
     ap.add_argument("files", nargs="*")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
@@ -224,6 +227,10 @@ def main():
             subprocess.run(["/usr/bin/python3", make, noisy_dir.name, "--grid", str(grid), "--level", str(level)], check=True,
                            capture_output=True)
         files = sorted(glob.glob(os.path.join(noisy_dir.name, "*.stl")) + glob.glob(os.path.join(noisy_dir.name, "*.obj")))
+    if args.decimated:
+        made = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "bench", "make_decimated_surfaces.py"), noisy_dir.name, "--cli", cli],
+                              check=True, capture_output=True, text=True)
+        files = made.stdout.split()
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return

@@ -1,7 +1,8 @@
 // The CAD parts of tests/data/cad (FreeCAD exports: steiner_vs_tetgen_test.cpp says what they are)
 // through the default command, as a FreeCAD user runs it, and `sweepcdt check` on every result: the
 // default meshes them all, and each mesh is exactly the CDT of its part. And parts of 3D prints as
-// OpenSCAD exports them (tests/data/scad/README.md), and surfaces like scans' (tests/data/scan).
+// OpenSCAD exports them (tests/data/scad/README.md), surfaces like scans' (tests/data/scan), and
+// surfaces decimated by MeshLab (tests/data/decimated).
 #include <algorithm>
 #include <cstdlib>
 
@@ -68,6 +69,28 @@ TEST(CliCad, ScanLikeSurfacesMeshByDefaultAndCheckVerifiesThem) {
     EXPECT_EQ(ok.exit_code, 0) << name << "\n" << ok.out;
   }
   EXPECT_GE(with_points, 3) << "the slivers need Steiner points: nothing exercised";
+}
+
+// Surfaces as MeshLab users simplify them (tests/data/decimated: quadric edge collapse of CAD parts,
+// faces flat only up to rounding): every one meshes by default, and `check` verifies it.
+TEST(CliCad, DecimatedSurfacesMeshByDefaultAndCheckVerifiesThem) {
+  const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "decimated";
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(folder))
+    if (entry.path().extension() == ".ply") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_EQ(files.size(), 6u) << folder;
+  TempDir dir;
+  int with_points = 0;
+  for (const fs::path& file : files) {
+    const fs::path output = dir.path() / (file.stem().string() + ".mesh");
+    const CliRun r = run(quoted(file) + " -o " + quoted(output), dir);
+    ASSERT_EQ(r.exit_code, 0) << file << "\n" << r.out;
+    with_points += !r.says(" 0 Steiner points");
+    const CliRun ok = run("check " + quoted(file) + " " + quoted(output), dir);
+    EXPECT_EQ(ok.exit_code, 0) << file << "\n" << ok.out;
+  }
+  EXPECT_GE(with_points, 5) << "the thin triangles need Steiner points: nothing exercised";
 }
 
 }  // namespace
