@@ -11,6 +11,17 @@
 namespace sweepcdt::cli::testing {
 namespace {
 
+// `sweepcdt SURFACE -o OUTPUT` with the default options, then `sweepcdt check` of the result (when
+// there is one).
+struct Meshed {
+  CliRun mesh, check;
+};
+Meshed mesh_and_check(const fs::path& surface, const fs::path& output, const TempDir& dir) {
+  Meshed m{run(quoted(surface) + " -o " + quoted(output), dir), {-1, ""}};
+  if (m.mesh.exit_code == 0) m.check = run("check " + quoted(surface) + " " + quoted(output), dir);
+  return m;
+}
+
 TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
   const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "cad";
   std::vector<fs::path> files;
@@ -21,12 +32,10 @@ TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
   TempDir dir;
   int meshed = 0;
   for (const fs::path& file : files) {
-    const fs::path output = dir.path() / (file.stem().string() + file.extension().string().substr(1) + ".mesh");
-    const CliRun r = run(quoted(file) + " -o " + quoted(output), dir);
-    ASSERT_EQ(r.exit_code, 0) << file << "\n" << r.out;
-    const CliRun ok = run("check " + quoted(file) + " " + quoted(output), dir);
-    EXPECT_EQ(ok.exit_code, 0) << file << "\n" << ok.out;
-    EXPECT_TRUE(ok.says("coplanar facets, tiling them;")) << ok.out;
+    const Meshed m = mesh_and_check(file, dir.path() / (file.stem().string() + file.extension().string().substr(1) + ".mesh"), dir);
+    ASSERT_EQ(m.mesh.exit_code, 0) << file << "\n" << m.mesh.out;
+    EXPECT_EQ(m.check.exit_code, 0) << file << "\n" << m.check.out;
+    EXPECT_TRUE(m.check.says("coplanar facets, tiling them;")) << m.check.out;
     ++meshed;
   }
   EXPECT_EQ(meshed, static_cast<int>(files.size()));
@@ -40,14 +49,13 @@ TEST(CliCad, OpenScadExportsMeshByDefaultAndCheckVerifiesThem) {
   const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "scad";
   TempDir dir;
   for (const char* part : {"l_bracket", "spur_gear", "knurled_knob", "twisted_vase"}) {
-    const fs::path stl = dir.path() / (std::string(part) + ".stl"), output = dir.path() / (std::string(part) + ".mesh");
+    const fs::path stl = dir.path() / (std::string(part) + ".stl");
     const std::string exported = "openscad -o " + quoted(stl) + " " + quoted(folder / (std::string(part) + ".scad")) + " > /dev/null 2>&1";
     ASSERT_EQ(std::system(exported.c_str()), 0) << exported;
-    const CliRun r = run(quoted(stl) + " -o " + quoted(output), dir);
-    ASSERT_EQ(r.exit_code, 0) << part << "\n" << r.out;
-    EXPECT_FALSE(r.says(" 0 Steiner points")) << part << ": no Steiner point needed, nothing exercised\n" << r.out;
-    const CliRun ok = run("check " + quoted(stl) + " " + quoted(output), dir);
-    EXPECT_EQ(ok.exit_code, 0) << part << "\n" << ok.out;
+    const Meshed m = mesh_and_check(stl, dir.path() / (std::string(part) + ".mesh"), dir);
+    ASSERT_EQ(m.mesh.exit_code, 0) << part << "\n" << m.mesh.out;
+    EXPECT_FALSE(m.mesh.says(" 0 Steiner points")) << part << ": no Steiner point needed, nothing exercised\n" << m.mesh.out;
+    EXPECT_EQ(m.check.exit_code, 0) << part << "\n" << m.check.out;
   }
 }
 
@@ -61,12 +69,10 @@ TEST(CliCad, ScanLikeSurfacesMeshByDefaultAndCheckVerifiesThem) {
   ASSERT_EQ(std::system(make.c_str()), 0) << make;
   int with_points = 0;
   for (const char* name : {"blobs_16.stl", "blobs_16.obj", "gyroid_16.stl", "shell_4.obj"}) {
-    const fs::path surface = dir.path() / name, output = dir.path() / (std::string(name) + ".mesh");
-    const CliRun r = run(quoted(surface) + " -o " + quoted(output), dir);
-    ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.out;
-    with_points += !r.says(" 0 Steiner points");
-    const CliRun ok = run("check " + quoted(surface) + " " + quoted(output), dir);
-    EXPECT_EQ(ok.exit_code, 0) << name << "\n" << ok.out;
+    const Meshed m = mesh_and_check(dir.path() / name, dir.path() / (std::string(name) + ".mesh"), dir);
+    ASSERT_EQ(m.mesh.exit_code, 0) << name << "\n" << m.mesh.out;
+    with_points += !m.mesh.says(" 0 Steiner points");
+    EXPECT_EQ(m.check.exit_code, 0) << name << "\n" << m.check.out;
   }
   EXPECT_GE(with_points, 3) << "the slivers need Steiner points: nothing exercised";
 }
@@ -83,12 +89,10 @@ TEST(CliCad, DecimatedSurfacesMeshByDefaultAndCheckVerifiesThem) {
   TempDir dir;
   int with_points = 0;
   for (const fs::path& file : files) {
-    const fs::path output = dir.path() / (file.stem().string() + ".mesh");
-    const CliRun r = run(quoted(file) + " -o " + quoted(output), dir);
-    ASSERT_EQ(r.exit_code, 0) << file << "\n" << r.out;
-    with_points += !r.says(" 0 Steiner points");
-    const CliRun ok = run("check " + quoted(file) + " " + quoted(output), dir);
-    EXPECT_EQ(ok.exit_code, 0) << file << "\n" << ok.out;
+    const Meshed m = mesh_and_check(file, dir.path() / (file.stem().string() + ".mesh"), dir);
+    ASSERT_EQ(m.mesh.exit_code, 0) << file << "\n" << m.mesh.out;
+    with_points += !m.mesh.says(" 0 Steiner points");
+    EXPECT_EQ(m.check.exit_code, 0) << file << "\n" << m.check.out;
   }
   EXPECT_GE(with_points, 5) << "the thin triangles need Steiner points: nothing exercised";
 }
