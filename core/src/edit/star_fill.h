@@ -1,6 +1,6 @@
 // The exact check that a star sweep's simplices are the CDT of the cavity a vertex deletion leaves
 // (paper §5; EditableCdt::work_out) — validate()'s verdict for that one kind of PLC, in one pass over
-// a few dozen facets instead of validate()'s general machinery, which was 15% of the deletion pass
+// a few dozen facets instead of validate()'s general machinery, which was 16% of the deletions
 // on Steiner-heavy parts (oblique_cylinders_fine: 30k deletions of ~20-simplex stars).
 //
 // The cavity: a facet-bounded PLC whose notated constraints (the link faces, and the facets through v
