@@ -230,7 +230,7 @@ def main():
     if args.decimated:
         made = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "bench", "make_decimated_surfaces.py"), noisy_dir.name, "--cli", cli],
                               check=True, capture_output=True, text=True)
-        files = made.stdout.split()
+        files = made.stdout.splitlines()
     if args.before:
         paired(os.path.join(os.path.abspath(args.before), "plugin", "cli", "sweepcdt"), cli, files, args.repeat or 5)
         return
