@@ -24,25 +24,15 @@ SOURCES = ["box_fused_sphere_fine.stl", "filleted_box_fine.stl", "flange_fine.st
            "pipe_tee_fine.stl", "plate_with_holes_fine.stl"]
 PERCENTS = (10, 30)
 
-SCRIPT = """<!DOCTYPE FilterScript>
-<FilterScript>
- <filter name="Simplification: Quadric Edge Collapse Decimation">
-  <Param type="RichInt" value="0" name="TargetFaceNum"/>
-  <Param type="RichFloat" value="{fraction}" name="TargetPerc"/>
-  <Param type="RichFloat" value="0.3" name="QualityThr"/>
-  <Param type="RichBool" value="false" name="PreserveBoundary"/>
-  <Param type="RichFloat" value="1" name="BoundaryWeight"/>
-  <Param type="RichBool" value="true" name="PreserveNormal"/>
-  <Param type="RichBool" value="true" name="PreserveTopology"/>
-  <Param type="RichBool" value="true" name="OptimalPlacement"/>
-  <Param type="RichBool" value="false" name="PlanarQuadric"/>
-  <Param type="RichFloat" value="0.001" name="PlanarWeight"/>
-  <Param type="RichBool" value="false" name="QualityWeight"/>
-  <Param type="RichBool" value="true" name="AutoClean"/>
-  <Param type="RichBool" value="false" name="Selected"/>
- </filter>
-</FilterScript>
-"""
+# The filter's parameters (meshlabserver -d lists them), TargetPerc set per run.
+PARAMETERS = [("RichInt", "TargetFaceNum", "0"), ("RichFloat", "TargetPerc", "{fraction}"), ("RichFloat", "QualityThr", "0.3"),
+              ("RichBool", "PreserveBoundary", "false"), ("RichFloat", "BoundaryWeight", "1"), ("RichBool", "PreserveNormal", "true"),
+              ("RichBool", "PreserveTopology", "true"), ("RichBool", "OptimalPlacement", "true"), ("RichBool", "PlanarQuadric", "false"),
+              ("RichFloat", "PlanarWeight", "0.001"), ("RichBool", "QualityWeight", "false"), ("RichBool", "AutoClean", "true"),
+              ("RichBool", "Selected", "false")]
+SCRIPT = ("<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name=\"Simplification: Quadric Edge Collapse Decimation\">\n" +
+          "".join(f'  <Param type="{kind}" value="{value}" name="{name}"/>\n' for kind, name, value in PARAMETERS) +
+          " </filter>\n</FilterScript>\n")
 
 
 def decimate(source, output, percent, work):

@@ -15,6 +15,16 @@ void sort_tuple(std::array<uint32_t, N>& a) {
     for (std::size_t j = i; j > 0 && a[j] < a[j - 1]; --j) std::swap(a[j], a[j - 1]);
 }
 
+// Whether the order of the distinct ids `ids` is an odd permutation of the ascending one: two
+// orders of one simplex's vertices give orientations of the same sign exactly when they agree here.
+template <std::size_t N>
+bool odd_permutation(const std::array<uint32_t, N>& ids) {
+  bool odd = false;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j) odd ^= ids[i] > ids[j];
+  return odd;
+}
+
 struct TupleHash {
   template <std::size_t N>
   std::size_t operator()(const std::array<uint32_t, N>& key) const {

@@ -182,13 +182,7 @@ class Validator {
     std::copy_n(tri_.simplex(a.simplex), D + 1, replaced.begin());
     replaced[a.local] = apex(b);
     std::copy_n(tri_.simplex(b.simplex), D + 1, other.begin());
-    return odd_permutation(replaced) == odd_permutation(other) ? Sign::Positive : Sign::Negative;
-  }
-  static bool odd_permutation(const std::array<uint32_t, D + 1>& ids) {
-    bool odd = false;
-    for (int i = 0; i <= D; ++i)
-      for (int j = i + 1; j <= D; ++j) odd ^= ids[i] > ids[j];
-    return odd;
+    return detail::odd_permutation(replaced) == detail::odd_permutation(other) ? Sign::Positive : Sign::Negative;
   }
 
   void interior_facet_sides() {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../facet_hash.h"
 #include "../facets.h"
 #include "../ids_text.h"
 #include "sweepcdt/predicates/orientation.h"
@@ -13,15 +14,6 @@
 
 namespace sweepcdt::detail {
 namespace {
-
-// Whether the vertex order `ids` (distinct) is an odd permutation of the ascending one.
-template <std::size_t N>
-bool odd_permutation(const std::array<uint32_t, N>& ids) {
-  bool odd = false;
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = i + 1; j < N; ++j) odd ^= ids[i] > ids[j];
-  return odd;
-}
 
 template <int D>
 std::array<uint32_t, D + 1> simplex_of(const Triangulation<D>& fill, uint32_t t) {

@@ -47,12 +47,8 @@ FaceKey<D> facet_opposite(const std::array<uint32_t, D + 1>& s, int i) {
 
 // Parity of the permutation that sorts `ids`: +1 even, -1 odd.
 template <std::size_t N>
-int sort_parity(std::array<uint32_t, N> ids) {
-  int parity = 1;
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = i + 1; j < N; ++j)
-      if (ids[i] > ids[j]) parity = -parity;
-  return parity;
+int sort_parity(const std::array<uint32_t, N>& ids) {
+  return odd_permutation(ids) ? -1 : 1;
 }
 
 template <int D, class Frame>
