@@ -75,6 +75,40 @@ void for_each_part(std::size_t n, unsigned threads, Body&& body, std::size_t per
     if (e) std::rethrow_exception(e);
 }
 
+// first() on this thread while second() runs on a helper, given two threads (else one after the
+// other, in that order): for two pieces of work that share nothing they write. Once both are done
+// the first exception is rethrown, first()'s before second()'s, as one thread would have met them;
+// ties second()'s predicates decide by the perturbation are credited to the calling thread.
+template <class First, class Second>
+void side_by_side(bool on_two_threads, First&& first, Second&& second) {
+  if (!on_two_threads) {
+    first();
+    second();
+    return;
+  }
+  std::exception_ptr second_error;
+  uint64_t ties = 0;
+  std::thread helper([&] {
+    const uint64_t before = predicates::perturbation_ties_on_this_thread();
+    try {
+      second();
+    } catch (...) {
+      second_error = std::current_exception();
+    }
+    ties = predicates::perturbation_ties_on_this_thread() - before;
+  });
+  std::exception_ptr first_error;
+  try {
+    first();
+  } catch (...) {
+    first_error = std::current_exception();
+  }
+  helper.join();
+  predicates::add_perturbation_ties_on_this_thread(ties);
+  if (first_error) std::rethrow_exception(first_error);
+  if (second_error) std::rethrow_exception(second_error);
+}
+
 // Threads kept for many small jobs: the deletion pass works out thousands of vertex deletions of a
 // fraction of a millisecond each, where starting a thread per batch would cost as much as the work.
 // run(n, job) calls job(i) once for every i in [0, n), spread over the helpers and the calling

@@ -11,11 +11,14 @@
 #include <iostream>
 #include <map>
 #include <random>
+#include <set>
 #include <thread>
 
 #include "cad_noise.h"
 #include "cavity/disturbed.h"
 #include "edit/remove_steiner.h"
+#include "steiner/refine.h"
+#include "steiner/facet_groups.h"
 #include "parallel.h"
 #include "delaunay/delaunay.h"
 #include "sweepcdt/cdt.h"
@@ -161,6 +164,73 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
         EXPECT_EQ(stats.queue_pops, stats_one.queue_pops);
         EXPECT_EQ(stats.drop_moves, stats_one.drop_moves);
       }
+    }
+  }
+}
+
+// Refinement inserts a large pass's points into the tetrahedralization on a helper thread while it
+// splits the surface's triangles (refine.h, kPointsBeside): the refined PLC one thread makes, point
+// for point and triangle for triangle, and the same tetrahedralization. A revolved surface with
+// double coordinates and noise, every triangle a facet: refinement's first pass splits each segment that is no
+// edge of the input points' Delaunay tetrahedralization, counted here, enough for the helper.
+TEST(Parallel, RefinementIsTheSameForAnyNumberOfThreads) {
+  Plc<3> vase;
+  std::vector<std::array<double, 2>> profile;
+  for (int k = 0; k < 13; ++k) profile.push_back({12 + 6 * (k - 6) * (k - 6) / 36.0, 3.5 * k});  // a waist: not convex
+  fixtures::add_revolved(vase, profile, 360, 0, 42);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> jitter(-1e-2, 1e-2);
+  for (double& x : vase.points) x += jitter(rng);  // a scan's noise: half the strips' diagonals are not Delaunay
+  detail::DelaunayEdges input_delaunay(vase.points);
+  std::set<uint64_t> first_pass;
+  for (std::size_t t = 0; t < vase.num_simplices(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = vase.simplex(t)[i], b = vase.simplex(t)[(i + 1) % 3];
+      if (!input_delaunay.has_edge(a, b)) first_pass.insert(detail::edge_key(a, b));
+    }
+  ASSERT_GE(first_pass.size(), detail::kPointsBeside) << "the first pass is too small for the helper";
+  Options one = mesh_defaults();
+  one.facets = FacetMode::Triangles;
+  Options many = one;
+  one.threads = 1;
+  many.threads = kMany;
+  const detail::RefinedPlc a = detail::refine(vase, one), b = detail::refine(vase, many);
+  std::cout << "[ vase ] " << first_pass.size() << " points in the first pass, " << a.steiner_on.size() << " in all\n";
+  EXPECT_GT(a.steiner_on.size(), first_pass.size());
+  EXPECT_EQ(b.plc.points, a.plc.points);
+  EXPECT_EQ(b.plc.simplices, a.plc.simplices);
+  EXPECT_EQ(b.steiner_on, a.steiner_on);
+  EXPECT_EQ(b.flips, a.flips);
+  ASSERT_TRUE(a.delaunay && b.delaunay);
+  EXPECT_EQ(b.delaunay->tets, a.delaunay->tets);
+}
+
+// side_by_side() runs its second job on another thread when asked, and rethrows the first job's
+// exception before the second's, as one thread running them in order would meet them.
+TEST(Parallel, SideBySideRunsTheSecondJobOnAHelperAndRethrowsInOrder) {
+  std::thread::id first_on, second_on;
+  detail::side_by_side(true, [&] { first_on = std::this_thread::get_id(); }, [&] { second_on = std::this_thread::get_id(); });
+  EXPECT_EQ(first_on, std::this_thread::get_id());
+  EXPECT_NE(second_on, std::this_thread::get_id());
+  detail::side_by_side(false, [&] { first_on = std::this_thread::get_id(); }, [&] { second_on = std::this_thread::get_id(); });
+  EXPECT_EQ(second_on, std::this_thread::get_id());
+  for (const bool two : {false, true}) {
+    bool second_ran = false;
+    try {
+      detail::side_by_side(two, [] { throw std::runtime_error("first"); }, [&] {
+        second_ran = true;
+        throw std::logic_error("second");
+      });
+      ADD_FAILURE() << "nothing rethrown";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "first");
+    }
+    EXPECT_EQ(second_ran, two) << "one thread stops at the first error; two run both";
+    try {
+      detail::side_by_side(two, [] {}, [] { throw std::logic_error("second"); });
+      ADD_FAILURE() << "nothing rethrown";
+    } catch (const std::logic_error& e) {
+      EXPECT_STREQ(e.what(), "second");
     }
   }
 }

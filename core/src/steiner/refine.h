@@ -95,6 +95,11 @@ using RequiredSegments = std::unordered_set<uint64_t>;
 // until they are (the theorem's premise), or nothing (a CDT may well exist all the same).
 enum class Folds { MadeDelaunay, LeftAsTheyAre };
 
+// A pass of refinement that adds at least this many points inserts them into the Delaunay
+// tetrahedralization on a helper thread, given one, while the calling thread splits (and flips) the
+// surface's triangles; the refined PLC is the same either way. Fewer would not pay for the thread.
+inline constexpr std::size_t kPointsBeside = 256;
+
 // With SteinerMode::None only the facets are re-triangulated (FacetMode::Coplanar). `required`: only
 // those input segments are split (and the folds and segments that points inside facets need); null:
 // every segment, so that the refined PLC has a CDT by the theorem (with Folds::MadeDelaunay).
