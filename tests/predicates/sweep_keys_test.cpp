@@ -138,13 +138,14 @@ TYPED_TEST(SweepKeys, PerturbedKeysMatchReferenceOnGrid) {
 // The star sweep's order (compare_power_sequences) where it matters most: the centre p on an edge ab
 // that both simplices share (a deleted Steiner point on the segment it merges), so that their powers
 // at p tie exactly, perturbation included, and the tie-breaking points q_k decide — mostly by the
-// keys' enclosures (power_order_if_apart), else exactly. Against the perturbed spheres in rationals.
+// keys' enclosures, else exactly. Against the perturbed spheres in rationals; with and without the
+// caches a sweep keeps per queue item (PowerSequenceCache).
 TYPED_TEST(SweepKeys, StarOrderPastATieAtTheCentreMatchesReference) {
   constexpr int D = TypeParam::value;
   Rng rng(0x6e750007 + D);
   const Pool<D> pool(key_pool<D>(), rng);
   FailureBudget budget;
-  int decided_later = 0;
+  int decided_later = 0, cached = 0;
   const int cases = D <= 3 ? 1500 : 600;
   for (int n = 0; n < cases; ++n) {
     // s = {a, b, ...} and t = {a, b, ...} sharing 2..D of their vertices.
@@ -196,9 +197,21 @@ TYPED_TEST(SweepKeys, StarOrderPastATieAtTheCentreMatchesReference) {
                     << "\n" << dump_pair<D>(s, t) << dump<D>(delta);
     if (pr::compare_power_sequences<D>(t, s, delta.data(), toward.data(), D + 2) != -got && budget.fail())
       ADD_FAILURE() << "compare_power_sequences<" << D << "> not antisymmetric\n" << dump_pair<D>(s, t);
+    // With each simplex's cache (a sweep's queue item): the same answers, the second time from what
+    // the first worked out.
+    pr::PowerSequenceCache s_cache, t_cache;
+    for (int again = 0; again < 2; ++again) {
+      if (pr::compare_power_sequences<D>(s, t, delta.data(), toward.data(), D + 2, &s_cache, &t_cache) != got && budget.fail())
+        ADD_FAILURE() << "compare_power_sequences<" << D << "> with caches (call " << again << ") differs\n" << dump_pair<D>(s, t);
+      if (pr::compare_power_sequences<D>(t, s, delta.data(), toward.data(), D + 2, &t_cache, &s_cache) != -got && budget.fail())
+        ADD_FAILURE() << "compare_power_sequences<" << D << "> with caches not antisymmetric\n" << dump_pair<D>(s, t);
+    }
+    cached += (s_cache.known & 2) != 0 && (t_cache.known & 2) != 0;
   }
   EXPECT_EQ(budget.failures, 0) << "of " << cases << " cases";
   EXPECT_GT(decided_later, cases / 2) << "too few ties at the centre: the case is not exercised";
+  // (In 2D two simplices through ab share that facet: decided across it, without enclosures.)
+  if constexpr (D > 2) EXPECT_GT(cached, cases / 3) << "the enclosures at q_1 were not kept in the caches";
 }
 
 // q need not be a vertex; q a vertex of s or t, or of both, is the interesting case.

@@ -306,21 +306,6 @@ Sign compare_power(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Ver
   return (r != Sign::Zero ? r : power_difference_perturbed<D>(s, t, q)) * sigma;
 }
 
-// sign(Psi_q(s) - Psi_q(t)) when the enclosures of the two powers (power_interval) are apart — then
-// the unperturbed powers differ and the perturbation cannot change the order —, else nullopt. Past
-// an exact tie at Delta_0 the next entries mostly differ clearly: the star sweep's centre on the
-// segment it merges is on the line of every simplex's edge ab there, so all their powers at it are
-// |pa| |pb| (41% of the star sweeps' exact comparisons on pipe_tee_std; most others share a facet),
-// and two hand-written filters decide the next entry instead of the generic filter and often its
-// exact stage (PowerDifference: about 7000 instructions a comparison).
-template <int D>
-std::optional<Sign> power_order_if_apart(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const double* q) {
-  const KeyInterval a = power_interval<D>(s, q), b = power_interval<D>(t, q);
-  if (a.hi < b.lo) return Sign::Negative;
-  if (b.hi < a.lo) return Sign::Positive;
-  return std::nullopt;  // overlapping, or NaN
-}
-
 // s and t share a facet f (t's vertices but its apex b). Then Psi_x(s) - Psi_x(t) is an affine
 // function of x that vanishes on aff(f), perturbation included (both perturbed spheres pass through
 // f's lifted points): lambda * orient(f, x). At b it is the perturbed height of b's lifted point over
@@ -357,8 +342,30 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
   return compare_power_sequences<D>(s, t, delta.data(), toward.data(), D + 1);
 }
 
+// A simplex's orientation and its power enclosure at q_k (k >= 1), from `cache` when it has them.
+// Two enclosures apart decide sign(Psi_q(s) - Psi_q(t)): then the unperturbed powers differ and the
+// perturbation cannot change the order. Past an exact tie at Delta_0 the next entries mostly differ
+// clearly: the star sweep's centre on the segment it merges is on the line of every simplex's edge
+// ab there, so all their powers at it are |pa| |pb| (41% of the star sweeps' exact comparisons on
+// pipe_tee_std; most others share a facet), and two enclosures decide the next entry instead of the
+// generic filter and often its exact stage (PowerDifference: about 7000 instructions a comparison).
 template <int D>
-Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* delta, const int8_t* toward, int n) {
+Sign cached_orientation(const Vertices<D + 1>& s, PowerSequenceCache* cache) {
+  if (cache && cache->orientation != 0) return static_cast<Sign>(cache->orientation);
+  const Sign o = orient<D>(coords_of(s));
+  if (cache) cache->orientation = static_cast<int8_t>(o);
+  return o;
+}
+template <int D>
+KeyInterval cached_power_interval(const Vertices<D + 1>& s, const Vertex* delta, int k, PowerSequenceCache* cache) {
+  if (!cache) return power_interval<D>(s, delta[k].x);
+  if (!(cache->known >> k & 1)) cache->at[k] = power_interval<D>(s, delta[k].x), cache->known |= static_cast<uint8_t>(1u << k);
+  return cache->at[k];
+}
+
+template <int D>
+Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* delta, const int8_t* toward, int n,
+                             PowerSequenceCache* s_cache, PowerSequenceCache* t_cache) {
   int apex = -1, others = 0;  // t's vertices not in s
   for (int j = 0; j <= D; ++j)
     if (std::none_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == t[j].id; })) apex = j, ++others;
@@ -371,15 +378,20 @@ Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
   for (const Vertex& v : t)
     if (std::any_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == v.id; }) && shared < 2) edge[shared++] = &v;
   const bool on_edge_line_possible = D - others + 1 == 2;
-  const Sign sigma = orientation_product<D>(s, t, "compare_power_tuples");
+  const Sign os = cached_orientation<D>(s, s_cache), ot = cached_orientation<D>(t, t_cache);
+  if (os == Sign::Zero || ot == Sign::Zero) throw std::invalid_argument("compare_power_tuples: degenerate simplex");
+  const Sign sigma = os * ot;
   const auto vertex_of = [](const Vertices<D + 1>& u, uint32_t id) {
     return std::any_of(u.begin(), u.end(), [&](const Vertex& w) { return w.id == id; });
   };
   for (int i = 0; i < n; ++i) {
     // Past Delta_0, whose enclosures the callers compared already, first the enclosures: apart, they
     // also rule out the exact zeros below.
-    if (i > 0)
-      if (const std::optional<Sign> apart = power_order_if_apart<D>(s, t, delta[i].x)) return toward[i] > 0 ? *apart : -*apart;
+    if (i > 0) {
+      const KeyInterval a = cached_power_interval<D>(s, delta, i, s_cache), b = cached_power_interval<D>(t, delta, i, t_cache);
+      if (a.hi < b.lo) return toward[i] > 0 ? Sign::Negative : Sign::Positive;
+      if (b.hi < a.lo) return toward[i] > 0 ? Sign::Positive : Sign::Negative;
+    }
     // A delta vertex of both simplices has power 0 for both, perturbation included (its lifted point
     // is on both lifted spheres): an exact zero known from the ids, which the exact stages would
     // otherwise find term by term (every comparison of two simplices through the sphere's seed
@@ -406,7 +418,8 @@ Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
   template Sign compare_circumcenters<D>(const Vertices<D + 1>&, const Vertices<D + 1>&);        \
   template Sign compare_power<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex&); \
   template Sign compare_power_tuples<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertices<D + 1>&); \
-  template Sign compare_power_sequences<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex*, const int8_t*, int);
+  template Sign compare_power_sequences<D>(const Vertices<D + 1>&, const Vertices<D + 1>&, const Vertex*, const int8_t*, int, \
+                                          PowerSequenceCache*, PowerSequenceCache*);
 SWEEPCDT_INSTANTIATE(2)
 SWEEPCDT_INSTANTIATE(3)
 SWEEPCDT_INSTANTIATE(4)

@@ -99,7 +99,8 @@ class Sweep {
     uint32_t f_version;
     bool g_is_face;
     predicates::KeyInterval key;  // encloses the first key entry: most comparisons stop here
-    mutable uint32_t words = kNone;  // star sweep: its entry in words_ once a comparison needed it
+    mutable uint32_t words = kNone;   // star sweep: its entry in words_ once a comparison needed it
+    mutable uint32_t powers = kNone;  // star sweep: its entry in powers_ once an exact comparison needed it
   };
   struct ItemOrder {
     const Sweep* sweep;
@@ -174,8 +175,9 @@ class Sweep {
       if (powers_may_differ_at_centre(a.s, b.s))
         if (const std::optional<Sign> first = predicates::power_order_from_words(words_of(b), words_of(a)))
           return (frame_.toward[0] > 0 ? *first : -*first) == Sign::Negative;
-      return predicates::compare_power_sequences<D>(vertices(b.s), vertices(a.s), star_centre().data(), frame_.toward.data(), D + 2) ==
-             Sign::Negative;
+      const uint32_t pb = powers_of(b), pa = powers_of(a);  // both entries made before either is referred to
+      return predicates::compare_power_sequences<D>(vertices(b.s), vertices(a.s), star_centre().data(), frame_.toward.data(), D + 2,
+                                                    &powers_[pb], &powers_[pa]) == Sign::Negative;
     } else
       return predicates::compare_power_tuples<D>(vertices(a.s), vertices(b.s), vertices(*delta_)) == Sign::Negative;
   }
@@ -198,6 +200,15 @@ class Sweep {
       words_.push_back(predicates::power_words<D>(vertices(item.s), frame_.centre[0]));
     }
     return words_[item.words];
+  }
+  // The item's entry in powers_, made on first use: what the exact comparisons work out about its
+  // simplex once (predicates::PowerSequenceCache), for every later comparison of it.
+  uint32_t powers_of(const Item& item) const {
+    if (item.powers == kNone) {
+      item.powers = static_cast<uint32_t>(powers_.size());
+      powers_.emplace_back();
+    }
+    return item.powers;
   }
   // The star's centre p and its tie-breaking points: no vertices (their lifts cancel in power
   // comparisons, sweep_keys.h), so no ids.
@@ -581,6 +592,7 @@ class Sweep {
   uint64_t reached_count_ = 0;
   std::priority_queue<Item, std::vector<Item>, ItemOrder> queue_;
   mutable std::vector<predicates::PowerWords> words_;  // Item::words (star sweep)
+  mutable std::vector<predicates::PowerSequenceCache> powers_;  // Item::powers (star sweep)
   std::vector<uint32_t> simplices_;
 };
 

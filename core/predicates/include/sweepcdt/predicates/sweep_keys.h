@@ -7,6 +7,7 @@
 // of  value + sum_v eps_v * coeff_v  : the value if it is non-zero, else the coefficient of the
 // least vertex id that is non-zero.
 #pragma once
+#include <array>
 #include <optional>
 
 #include "sweepcdt/predicates/sign.h"
@@ -30,19 +31,32 @@ template <int D>
 Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
                           const Vertices<D + 1>& delta);
 
-// The same for any sequence of points q_0..q_{n-1} (n <= D + 2), entry k multiplied by toward[k]
-// (+1 or -1): the order of the star sweep (sweep_sides.h, StarSweep), whose centre may be perturbed
-// away from a point.
-template <int D>
-Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* q, const int8_t* toward, int n);
-
 // Certified enclosures of the keys, to compare queue items cheaply: the exact (unperturbed) value
 // lies in [lo, hi]. When two enclosures are disjoint their order is the order of the perturbed keys
-// too (the perturbation is infinitesimal); otherwise compare exactly with the functions above.
+// too (the perturbation is infinitesimal); otherwise compare exactly with the functions above and below.
 // lo = -inf, hi = +inf when the filter's preconditions fail (see approx.h).
 struct KeyInterval {
   double lo, hi;
 };
+
+// What compare_power_sequences works out about one simplex and reuses when given it again: the
+// enclosures of its powers at q_1..q_{n-1} and its orientation, each computed on first need. A
+// sweep's queue compares one item with many others; in the star sweeps of Steiner points every
+// simplex through the point's segment ties with the others at q_0, and recomputing both was a
+// fifth of those sweeps' time (perforated_tube_fine).
+struct PowerSequenceCache {
+  std::array<KeyInterval, 7> at{};  // at[k]: the power at q_k (k >= 1), when bit k of `known` is set
+  uint8_t known = 0;
+  int8_t orientation = 0;  // its sign; 0: not known yet
+};
+
+// The same for any sequence of points q_0..q_{n-1} (n <= D + 2), entry k multiplied by toward[k]
+// (+1 or -1): the order of the star sweep (sweep_sides.h, StarSweep), whose centre may be perturbed
+// away from a point. `s_cache` and `t_cache`, when given, hold what earlier calls with the same
+// simplex (and the same q) worked out; the answer is the same without them.
+template <int D>
+Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const Vertex* q, const int8_t* toward, int n,
+                             PowerSequenceCache* s_cache = nullptr, PowerSequenceCache* t_cache = nullptr);
 
 // Psi_q(s), the first entry of the power tuple for q = Delta_0.
 template <int D>
