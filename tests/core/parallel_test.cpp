@@ -170,8 +170,8 @@ TEST(Parallel, CdtIsTheSameForAnyNumberOfThreads) {
 
 // Refinement inserts a large pass's points into the tetrahedralization on a helper thread while it
 // splits the surface's triangles (refine.h, kPointsBeside): the refined PLC one thread makes, point
-// for point and triangle for triangle, and the same tetrahedralization. A revolved surface with
-// double coordinates and noise, every triangle a facet: refinement's first pass splits each segment that is no
+// for point and triangle for triangle, and the same tetrahedralization. A revolved surface with a
+// waist and noise, every triangle a facet: refinement's first pass splits each segment that is no
 // edge of the input points' Delaunay tetrahedralization, counted here, enough for the helper.
 TEST(Parallel, RefinementIsTheSameForAnyNumberOfThreads) {
   Plc<3> vase;
@@ -180,7 +180,7 @@ TEST(Parallel, RefinementIsTheSameForAnyNumberOfThreads) {
   fixtures::add_revolved(vase, profile, 360, 0, 42);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> jitter(-1e-2, 1e-2);
-  for (double& x : vase.points) x += jitter(rng);  // a scan's noise: half the strips' diagonals are not Delaunay
+  for (double& x : vase.points) x += jitter(rng);  // a scan's noise: many edges of the waist's strips not Delaunay
   detail::DelaunayEdges input_delaunay(vase.points);
   std::set<uint64_t> first_pass;
   for (std::size_t t = 0; t < vase.num_simplices(); ++t)
