@@ -125,6 +125,13 @@ class EditableCdt {
   // the star CDT: a point refused wrongly stays, as one Steiner point more, and the CDT is still
   // checked exactly. cdt()'s deletion pass turns it on (core/src/edit/remove_steiner.h).
   void guess_blocked_refusals(bool on);
+  // A deletion whose cavity's CDT has more than `factor` times the simplices of the vertex's star,
+  // plus 8, is refused (VertexRemovalError) with this set (0: off, the default). The CDT of a flat
+  // cavity can need quadratically many simplices (two long rows of points, as the star of a Steiner
+  // point on a thin wall's long edge leaves: 1462 tetrahedra for a star of 88), so such a deletion
+  // trades one vertex for a far larger, worse mesh. cdt()'s deletion pass uses 3
+  // (core/src/edit/remove_steiner.h).
+  void limit_growth(unsigned factor);
 
   bool has_vertex(uint32_t v) const;
   std::vector<uint32_t> neighbours(uint32_t v) const;  // the vertices of v's link (sharing a simplex with it)

@@ -78,6 +78,7 @@ struct EditableCdt<D>::Impl {
   bool unbend = false;                 // unbend_facets_at_steiner_points()
   std::size_t unbend_largest_star = 0;
   bool guess_blocked_refusals = false;  // EditableCdt::guess_blocked_refusals()
+  unsigned growth_factor = 0;           // EditableCdt::limit_growth()
   std::vector<char> constraint_alive;
   std::vector<std::vector<uint32_t>> constraints_at;  // per vertex, the live ones
   detail::TupleMap<D> constraint_of;  // sorted facet -> its live constraint
@@ -520,6 +521,13 @@ struct EditableCdt<D>::Impl {
       NoCdtError error = cavity_error(*failed);
       p.witness = error.witness();
       p.error = std::make_exception_ptr(std::move(error));
+      p.refused = true;
+      return;
+    }
+    if (growth_factor > 0 && fill.num_simplices() > growth_factor * star.size() + 8) {
+      p.error = std::make_exception_ptr(VertexRemovalError("vertex " + std::to_string(v) + " is kept: its cavity's CDT has " +
+                                                           std::to_string(fill.num_simplices()) + " simplices, its star " +
+                                                           std::to_string(star.size()) + " (limit_growth)"));
       p.refused = true;
       return;
     }
@@ -1104,6 +1112,11 @@ void EditableCdt<D>::unbend_facets_at_steiner_points(std::size_t largest_star) {
 template <int D>
 void EditableCdt<D>::guess_blocked_refusals(bool on) {
   impl_->guess_blocked_refusals = on;
+}
+
+template <int D>
+void EditableCdt<D>::limit_growth(unsigned factor) {
+  impl_->growth_factor = factor;
 }
 
 template <int D>

@@ -27,6 +27,11 @@ inline constexpr uint32_t kPointsForThreads = 1024;
 // kept in 118 s unbounded, before the double-word predicate stage; 7189 in 7.3 s at 32, after it).
 inline constexpr std::size_t kLargestBentStar = 32;
 
+// A deletion may fill its cavity with at most this many times the point's star's tetrahedra, plus 8
+// (EditableCdt::limit_growth). Measured in session 37 against no limit: 2 kept 102 more points on
+// gearwheel_ascii.stl, 3 nine fewer; both cut perforated_tube_std's tetrahedra by more than half.
+inline constexpr unsigned kGrowthFactor = 3;
+
 struct SteinerDeletions {
   uint64_t removed = 0, tried = 0, skipped = 0;  // points deleted, deletions tried, retries skipped
   uint64_t refused_early = 0;  // of those tried: refused before the cavity was built (EditableCdt::refused_early)
