@@ -40,7 +40,7 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
   // A point whose deletion would fill its cavity with more than three times its star's tetrahedra
   // stays: on thin walls such deletions took perforated_tube_std from 222875 tetrahedra (refinement's
   // 82306 points) to 513781 (55809 points), against 227397 now (56652 points; tetgen -pQ: 136830 with
-  // 45192), 0.85x the time (EditableCdt::limit_growth).
+  // 45192), 0.86x the time (EditableCdt::limit_growth).
   mesh.limit_growth(kGrowthFactor);
   // Per Steiner point: how many points made from it are still there; it is tried only at 0.
   std::vector<uint32_t> children(end - first, 0);
