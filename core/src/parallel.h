@@ -76,37 +76,14 @@ void for_each_part(std::size_t n, unsigned threads, Body&& body, std::size_t per
 }
 
 // first() on this thread while second() runs on a helper, given two threads (else one after the
-// other, in that order): for two pieces of work that share nothing they write. Once both are done
-// the first exception is rethrown, first()'s before second()'s, as one thread would have met them;
-// ties second()'s predicates decide by the perturbation are credited to the calling thread.
+// other, in that order): for two pieces of work that share nothing they write. for_each_part's two
+// parts, so the first exception, first()'s before second()'s, is rethrown once both are done, and
+// second()'s perturbation ties are credited to the calling thread.
 template <class First, class Second>
 void side_by_side(bool on_two_threads, First&& first, Second&& second) {
-  if (!on_two_threads) {
-    first();
-    second();
-    return;
-  }
-  std::exception_ptr second_error;
-  uint64_t ties = 0;
-  std::thread helper([&] {
-    const uint64_t before = predicates::perturbation_ties_on_this_thread();
-    try {
-      second();
-    } catch (...) {
-      second_error = std::current_exception();
-    }
-    ties = predicates::perturbation_ties_on_this_thread() - before;
-  });
-  std::exception_ptr first_error;
-  try {
-    first();
-  } catch (...) {
-    first_error = std::current_exception();
-  }
-  helper.join();
-  predicates::add_perturbation_ties_on_this_thread(ties);
-  if (first_error) std::rethrow_exception(first_error);
-  if (second_error) std::rethrow_exception(second_error);
+  for_each_part(2, on_two_threads ? 2 : 1, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t job = begin; job < end; ++job) job == 0 ? first() : second();
+  }, 1);
 }
 
 // Threads kept for many small jobs: the deletion pass works out thousands of vertex deletions of a

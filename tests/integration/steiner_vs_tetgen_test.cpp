@@ -23,6 +23,7 @@
 #include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/validate.h"
 #include "cad_noise.h"
+#include "edit/remove_steiner.h"
 #include "sweepcdt/io/verify_mesh.h"
 #include "sweepcdt/io/volume_mesh.h"
 #include "test_shapes.h"
@@ -242,9 +243,9 @@ TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
   EXPECT_GT(stats.steiner_refused_early, 2000u);
   EXPECT_GT(stats.steiner_deletions_tried, stats.steiner_points + stats.steiner_points_removed);
   // Each point left is refused by the exact checks, or by the pass's bound on a deletion's growth
-  // (kGrowthFactor in core/src/edit/remove_steiner.h: at most 3 times the star's tetrahedra, plus 8).
+  // (kGrowthFactor: at most that many times the star's tetrahedra, plus 8).
   EditableCdt<3> mesh(refined, tri);
-  mesh.limit_growth(3);
+  mesh.limit_growth(detail::kGrowthFactor);
   std::vector<uint32_t> neighbours;
   std::vector<uint32_t> deletable;
   for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v)
@@ -256,8 +257,8 @@ TEST(SteinerDeletion, KeepsOnlyPointsThatCannotGo) {
 // The growth bound keeps a Steiner point whose deletion would fill its cavity with far more
 // tetrahedra than its star had: on a perforated thin-walled tube (a 2 mm wall fanned by long
 // triangles) the pass without it left 55809 points in 513781 tetrahedra, where refinement's 82306
-// points had 222875; with it the mesh stays near refinement's size. Each refusal is one
-// (VertexRemovalError, limit_growth), and without the bound those points would go.
+// points had 222875; with it the mesh stays near refinement's size. A point it keeps is one a
+// deletion without the bound would take, refused with a VertexRemovalError naming limit_growth.
 TEST(SteinerDeletion, GrowthBoundKeepsThinWallMeshesSmall) {
   const Plc<3> plc = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / "perforated_tube_std.stl");
   Options options = mesh_defaults(), keep = mesh_defaults();
@@ -272,24 +273,19 @@ TEST(SteinerDeletion, GrowthBoundKeepsThinWallMeshesSmall) {
               all_points.num_points(), all_points.num_simplices(), tri.num_points(), tri.num_simplices());
   EXPECT_LT(tri.num_points(), all_points.num_points());
   EXPECT_LT(tri.num_simplices(), 1.1 * static_cast<double>(all_points.num_simplices())) << "the deletions grew the mesh";
-  // Points the bound keeps, and a plain deletion would take: refused there for their growth alone.
+  // The first point left that a deletion without the bound takes: the bound refuses it, for its growth.
   EditableCdt<3> bounded(refined, tri), plain(refined, tri);
-  bounded.limit_growth(3);
+  bounded.limit_growth(detail::kGrowthFactor);
   std::vector<uint32_t> neighbours;
-  int kept_by_the_bound = 0;
-  for (uint32_t v = tri.num_input_points; v < tri.num_points() && kept_by_the_bound < 5; ++v) {
-    EditableCdt<3>::Removal removal = plain.plan_removal(v);
-    if (!plain.try_commit_removal(std::move(removal), neighbours)) continue;
-    ++kept_by_the_bound;
-    try {
-      bounded.remove_vertex(v);
-      ADD_FAILURE() << "vertex " << v << ": the bounded mesh deletes it too";
-    } catch (const VertexRemovalError& e) {
-      EXPECT_NE(std::string(e.what()).find("limit_growth"), std::string::npos) << e.what();
-    }
-    break;
+  uint32_t v = tri.num_input_points;
+  while (v < tri.num_points() && !plain.try_commit_removal(plain.plan_removal(v), neighbours)) ++v;
+  ASSERT_LT(v, tri.num_points()) << "no point kept by the bound alone: the bound is not exercised";
+  try {
+    bounded.remove_vertex(v);
+    ADD_FAILURE() << "vertex " << v << ": the bounded mesh deletes it too";
+  } catch (const VertexRemovalError& e) {
+    EXPECT_NE(std::string(e.what()).find("limit_growth"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(kept_by_the_bound, 1) << "no point kept by the bound alone: the bound is not exercised";
 }
 
 TEST(SteinerVsTetgen, TetgenIsInstalled) {

@@ -104,9 +104,19 @@ std::vector<uint32_t> ids_ascending(const Vertices<D + 1>& s, const Vertices<D +
   return ids;
 }
 
+// A simplex's orientation, from `cache` when it has it (compare_power_sequences).
 template <int D>
-Sign orientation_product(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const char* who) {
-  const Sign os = orient<D>(coords_of(s)), ot = orient<D>(coords_of(t));
+Sign cached_orientation(const Vertices<D + 1>& s, PowerSequenceCache* cache) {
+  if (cache && cache->orientation != 0) return static_cast<Sign>(cache->orientation);
+  const Sign o = orient<D>(coords_of(s));
+  if (cache) cache->orientation = static_cast<int8_t>(o);
+  return o;
+}
+
+template <int D>
+Sign orientation_product(const Vertices<D + 1>& s, const Vertices<D + 1>& t, const char* who, PowerSequenceCache* s_cache = nullptr,
+                         PowerSequenceCache* t_cache = nullptr) {
+  const Sign os = cached_orientation<D>(s, s_cache), ot = cached_orientation<D>(t, t_cache);
   if (os == Sign::Zero || ot == Sign::Zero) throw std::invalid_argument(std::string(who) + ": degenerate simplex");
   return os * ot;
 }
@@ -342,20 +352,13 @@ Sign compare_power_tuples(const Vertices<D + 1>& s, const Vertices<D + 1>& t, co
   return compare_power_sequences<D>(s, t, delta.data(), toward.data(), D + 1);
 }
 
-// A simplex's orientation and its power enclosure at q_k (k >= 1), from `cache` when it has them.
+// A simplex's power enclosure at q_k (k >= 1), from `cache` when it has it.
 // Two enclosures apart decide sign(Psi_q(s) - Psi_q(t)): then the unperturbed powers differ and the
 // perturbation cannot change the order. Past an exact tie at Delta_0 the next entries mostly differ
 // clearly: the star sweep's centre on the segment it merges is on the line of every simplex's edge
 // ab there, so all their powers at it are |pa| |pb| (41% of the star sweeps' exact comparisons on
 // pipe_tee_std; most others share a facet), and two enclosures decide the next entry instead of the
 // generic filter and often its exact stage (PowerDifference: about 7000 instructions a comparison).
-template <int D>
-Sign cached_orientation(const Vertices<D + 1>& s, PowerSequenceCache* cache) {
-  if (cache && cache->orientation != 0) return static_cast<Sign>(cache->orientation);
-  const Sign o = orient<D>(coords_of(s));
-  if (cache) cache->orientation = static_cast<int8_t>(o);
-  return o;
-}
 template <int D>
 KeyInterval cached_power_interval(const Vertices<D + 1>& s, const Vertex* delta, int k, PowerSequenceCache* cache) {
   if (!cache) return power_interval<D>(s, delta[k].x);
@@ -378,9 +381,7 @@ Sign compare_power_sequences(const Vertices<D + 1>& s, const Vertices<D + 1>& t,
   for (const Vertex& v : t)
     if (std::any_of(s.begin(), s.end(), [&](const Vertex& w) { return w.id == v.id; }) && shared < 2) edge[shared++] = &v;
   const bool on_edge_line_possible = D - others + 1 == 2;
-  const Sign os = cached_orientation<D>(s, s_cache), ot = cached_orientation<D>(t, t_cache);
-  if (os == Sign::Zero || ot == Sign::Zero) throw std::invalid_argument("compare_power_tuples: degenerate simplex");
-  const Sign sigma = os * ot;
+  const Sign sigma = orientation_product<D>(s, t, "compare_power_tuples", s_cache, t_cache);
   const auto vertex_of = [](const Vertices<D + 1>& u, uint32_t id) {
     return std::any_of(u.begin(), u.end(), [&](const Vertex& w) { return w.id == id; });
   };
