@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "delaunay/delaunay.h"
 #include "steiner/facet_flips.h"
 #include "steiner/facet_groups.h"
 #include "sweepcdt/cdt.h"
@@ -100,4 +101,71 @@ TEST(FacetFlips, FanOfAThinFacetReachesItsCdtPastTheRoundingCap) {
     EXPECT_EQ(canonical(facet.triangles), expected) << k << " points per edge, " << flips << " flips";
     if (k == 511) EXPECT_GT(flips, 10 * facet.triangles.size() + 1000) << "the case no longer needs more flips than the old cap";
   }
+}
+
+// Folds (steiner/facet_flips.h): a flip across a fold is tried only where a point of its
+// quadrilateral is marked bent, since four points in their facet's plane make no fold. The flips
+// must be those of trying every quadrilateral. A jittered grid in the plane z = 0, each cell split
+// by its diagonal that is not Delaunay, every third point lifted off the plane (as rounding lifts
+// Steiner points) and marked bent, between two walls of points that its folds must be Delaunay
+// against (a thin part), against every point marked bent.
+TEST(FacetFlips, FoldsFlipAsIfEveryPointWereBent) {
+  constexpr uint32_t n = 12;
+  std::vector<double> points;
+  std::vector<char> lifted;
+  uint32_t state = 12345;
+  const auto jitter = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (static_cast<double>(state >> 8) / (1u << 24) - 0.5) * 0.4;
+  };
+  for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t j = 0; j < n; ++j) {
+      const bool inside = i > 0 && j > 0 && i + 1 < n && j + 1 < n;
+      const bool lift = inside && (i * n + j) % 3 == 0;
+      points.insert(points.end(), {i + (inside ? jitter() : 0.0), j + (inside ? jitter() : 0.0), lift ? ((i + j) % 2 ? 1 : -1) * 0x1p-20 : 0.0});
+      lifted.push_back(lift);
+    }
+  const auto id = [&](uint32_t i, uint32_t j) { return i * n + j; };
+  const auto xy = [&](uint32_t v) { return std::array<double, 2>{points[3 * v], points[3 * v + 1]}; };
+  // Whether d lies inside the circle through a, b, c (counterclockwise): only to build the fans.
+  const auto in_circle = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    const auto [ax, ay] = xy(a);
+    const auto [bx, by] = xy(b);
+    const auto [cx, cy] = xy(c);
+    const auto [dx, dy] = xy(d);
+    const double m[3][3] = {{ax - dx, ay - dy, (ax - dx) * (ax - dx) + (ay - dy) * (ay - dy)},
+                            {bx - dx, by - dy, (bx - dx) * (bx - dx) + (by - dy) * (by - dy)},
+                            {cx - dx, cy - dy, (cx - dx) * (cx - dx) + (cy - dy) * (cy - dy)}};
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]) > 0;
+  };
+  std::vector<Triangle> grid;
+  std::unordered_set<uint64_t> boundary;
+  for (uint32_t i = 0; i + 1 < n; ++i)
+    for (uint32_t j = 0; j + 1 < n; ++j) {
+      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);  // counterclockwise
+      if (in_circle(a, b, c, d)) grid.insert(grid.end(), {Triangle{a, b, c}, Triangle{a, c, d}});  // ac is not Delaunay
+      else grid.insert(grid.end(), {Triangle{a, b, d}, Triangle{b, c, d}});
+    }
+  for (uint32_t k = 0; k + 1 < n; ++k)
+    for (const auto& [u, v] : {std::pair{id(k, 0), id(k + 1, 0)}, std::pair{id(k, n - 1), id(k + 1, n - 1)}, std::pair{id(0, k), id(0, k + 1)},
+                               std::pair{id(n - 1, k), id(n - 1, k + 1)}})
+      boundary.insert(detail::edge_key(u, v));
+  // Two walls beside the facet (a thin part), which its folds must be Delaunay against.
+  for (uint32_t v = 0; v < n * n; ++v)
+    for (const double z : {-0.7, 0.7}) points.insert(points.end(), {points[3 * v] + 0.5, points[3 * v + 1] + 0.5, z});
+  lifted.resize(points.size() / 3, 0);
+  const std::vector<std::array<uint32_t, 2>> on_no_segment(lifted.size(), {kNone, kNone});
+  detail::DelaunayEdges delaunay(points);
+  const auto delaunay_edge = [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); };
+  std::vector<Triangle> marked = grid, every = grid, none = grid;
+  const uint64_t flips = detail::flip_folds_to_delaunay({points, marked, boundary, on_no_segment}, lifted, delaunay_edge);
+  const uint64_t flips_every =
+      detail::flip_folds_to_delaunay({points, every, boundary, on_no_segment}, std::vector<char>(lifted.size(), 1), delaunay_edge);
+  ASSERT_GT(flips_every, 0u) << "no fold flipped: nothing exercised";
+  EXPECT_EQ(flips, flips_every);
+  EXPECT_EQ(marked, every);
+  // Not a comparison that holds for any flips: with no point marked bent nothing flips.
+  EXPECT_EQ(detail::flip_folds_to_delaunay({points, none, boundary, on_no_segment}, std::vector<char>(lifted.size(), 0), delaunay_edge), 0u);
+  EXPECT_EQ(none, grid);
 }

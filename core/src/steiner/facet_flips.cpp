@@ -22,8 +22,9 @@ class Flipper {
  public:
   // Without `delaunay_edge`: flips to each facet's CDT (in-circle); with it: flips folds to Delaunay
   // edges (flip_folds_to_delaunay).
-  explicit Flipper(FacetTriangles f, const std::function<bool(uint32_t, uint32_t)>* delaunay_edge = nullptr)
-      : f_(f), delaunay_edge_(delaunay_edge), drop_(f.triangles.size(), -1),
+  explicit Flipper(FacetTriangles f, const std::function<bool(uint32_t, uint32_t)>* delaunay_edge = nullptr,
+                   const std::vector<char>* bent = nullptr)
+      : f_(f), delaunay_edge_(delaunay_edge), bent_(bent), drop_(f.triangles.size(), -1),
         sides_(interior_edge_sides(f.triangles, f.segments, &pending_)) {}
 
   uint64_t run() {
@@ -114,6 +115,7 @@ class Flipper {
     if (j == 3) return false;  // orientations disagree: not a facet of one orientation
     const uint32_t d = u[(j + 2) % 3];
     if (c == d || on_common_segment(c, d)) return false;
+    if (delaunay_edge_ && !(*bent_)[a] && !(*bent_)[b] && !(*bent_)[c] && !(*bent_)[d]) return false;  // flat: no fold
 
     // Strictly convex quadrilateral a, d, b, c in the facet's plane.
     const int drop = drop_axis(t1);
@@ -168,6 +170,7 @@ class Flipper {
 
   FacetTriangles f_;
   const std::function<bool(uint32_t, uint32_t)>* delaunay_edge_;
+  const std::vector<char>* bent_;  // with delaunay_edge_: per point, may lie off its facets' planes
   std::array<uint32_t, 4> last_flip_{};  // the quadrilateral of the last flip
   std::vector<int> drop_;          // per triangle (its facet's projection; triangles of one facet agree)
   std::vector<uint64_t> pending_;  // declared before sides_, which fills it
@@ -178,8 +181,9 @@ class Flipper {
 
 uint64_t flip_facets_to_cdt(FacetTriangles facets) { return Flipper(facets).run(); }
 
-uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::function<bool(uint32_t, uint32_t)>& delaunay_edge) {
-  return Flipper(facets, &delaunay_edge).run();
+uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::vector<char>& bent,
+                                const std::function<bool(uint32_t, uint32_t)>& delaunay_edge) {
+  return Flipper(facets, &delaunay_edge, &bent).run();
 }
 
 }  // namespace sweepcdt::detail

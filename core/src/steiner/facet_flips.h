@@ -35,7 +35,11 @@ uint64_t flip_facets_to_cdt(FacetTriangles facets);
 // theorem needs Delaunay. Any triangulation of a facet will do, so a fold that is not an edge of the
 // Delaunay triangulation is flipped to the other diagonal of its (strictly convex) quadrilateral
 // when that one is: each flip trades a non-Delaunay edge for a Delaunay one, so the flips end.
-// Returns the number of flips; `delaunay_edge(a, b)` says whether ab is a Delaunay edge.
-uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::function<bool(uint32_t, uint32_t)>& delaunay_edge);
+// Returns the number of flips; `delaunay_edge(a, b)` says whether ab is a Delaunay edge. `bent`: per
+// point, whether it may lie off the plane of a facet holding it (a rounded Steiner point); a
+// quadrilateral of four others is flat, no fold, and is passed over without its predicates (the
+// exact stage of an orientation that is zero, on every facet edge of the surface).
+uint64_t flip_folds_to_delaunay(FacetTriangles facets, const std::vector<char>& bent,
+                                const std::function<bool(uint32_t, uint32_t)>& delaunay_edge);
 
 }  // namespace sweepcdt::detail

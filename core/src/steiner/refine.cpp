@@ -94,7 +94,8 @@ class Refiner {
     for (std::size_t t = 0; t < last.plc.simplices.size(); t += 3)
       tris_.push_back({last.plc.simplices[t], last.plc.simplices[t + 1], last.plc.simplices[t + 2]});
     unflipped_.assign(tris_.size(), 0);  // every facet flipped at the end of the last attempt
-    for (uint32_t m = r_.num_input_points; m < points_.size() / 3; ++m) points_off_segments_ += !exactly_on_its_segment(m);
+    bent_.assign(r_.num_input_points, 0);
+    for (uint32_t m = r_.num_input_points; m < points_.size() / 3; ++m) add_bent(!exactly_on_its_segment(m));
     prepared_ = looked_ = continues_ = true;
     pieces_of_segments();
   }
@@ -169,6 +170,7 @@ class Refiner {
     r_.num_input_points = static_cast<uint32_t>(input.num_points());
     r_.facets = groups_.num_facets();
     on_segment_.assign(input.num_points(), {kNone, kNone});
+    bent_.assign(input.num_points(), 0);
     tris_ = groups_.triangles;
     unflipped_.assign(tris_.size(), 1);
     for (uint32_t j = 0; j < tris_.size(); ++j) original_.push_back(j);
@@ -200,7 +202,7 @@ class Refiner {
     std::vector<char> off_facet(groups_.num_facets(), 0);
     for (std::size_t t = 0; t < tris_.size(); ++t)
       for (const uint32_t m : tris_[t])
-        if (!is_input(m) && !exactly_on_its_segment(m)) off_facet[groups_.facet[original_[t]]] = 1;
+        if (bent_[m]) off_facet[groups_.facet[original_[t]]] = 1;
     std::vector<char> off(tris_.size());
     for (std::size_t t = 0; t < tris_.size(); ++t) off[t] = off_facet[groups_.facet[original_[t]]];
     return off;
@@ -210,6 +212,10 @@ class Refiner {
     return u != kNone && strictly_inside_segment<3>(p(u), p(m), p(v));
   }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
+  void add_bent(bool bent) {
+    bent_.push_back(bent);
+    points_off_segments_ += bent;
+  }
 
   // Whether the piece ab of a segment must be Delaunay: with every segment required, or when it
   // lies on a required input segment, or is a fold made a segment (or on one, inside a facet).
@@ -288,8 +294,8 @@ class Refiner {
         return;
       }
       flip_folds(delaunay);
-      const std::vector<Fold> folds = folds_not_in(delaunay);
-      if (folds.empty() || folds_ == Folds::LeftAsTheyAre) {
+      const std::vector<Fold> folds = folds_ == Folds::NotLookedFor ? std::vector<Fold>{} : folds_not_in(delaunay);
+      if (folds.empty() || folds_ != Folds::MadeDelaunay) {
         r_.folds_left = folds.size();
         r_.delaunay = delaunay.mesh();
         return;
@@ -510,7 +516,7 @@ class Refiner {
       points_.insert(points_.end(), x, x + 3);
       locate_from_.push_back(a);
       on_segment_.push_back({kNone, kNone});
-      ++points_off_segments_;
+      add_bent(true);
       parameter_.push_back(0.0);
       r_.steiner_on.push_back(kNone);  // set by split_triangles, as for a segment's point
       r_.made_from.push_back({a, b});
@@ -584,7 +590,7 @@ class Refiner {
   // triangles it changes are flipped to their facet's CDT again next round, as before.
   void flip_folds(DelaunayEdges& delaunay) {
     const std::vector<Triangle> before = tris_;
-    r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_},
+    r_.flips += flip_folds_to_delaunay({points_, tris_, groups_.segments, on_segment_}, bent_,
                                        [&](uint32_t a, uint32_t b) { return delaunay.has_edge(a, b); });
     for (std::size_t t = 0; t < tris_.size(); ++t)
       if (tris_[t] != before[t]) unflipped_[t] = 1;
@@ -669,7 +675,7 @@ class Refiner {
     points_.insert(points_.end(), x, x + 3);
     locate_from_.push_back(a);
     on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
-    if (!exactly_on_its_segment(m)) ++points_off_segments_;
+    add_bent(!exactly_on_its_segment(m));
     parameter_.push_back(along_segment ? t : 0.0);
     // On an input segment: the first input triangle with that edge, which holds every point of it
     // (a triangle holding the piece may not: facet flips move triangles across the input triangles
@@ -792,7 +798,10 @@ class Refiner {
   std::vector<uint32_t> locate_from_;     // per point added since the tetrahedralization took the last ones: an end of what it split
   bool continues_ = false;                // made again from what an earlier refiner set aside (splits())
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
-  std::size_t points_off_segments_ = 0;  // Steiner points not exactly on their input segment, or inside a facet
+  // Per point: a Steiner point not exactly on its input segment, or inside a facet (the others lie in
+  // the planes of the facets that hold them); and how many.
+  std::vector<char> bent_;
+  std::size_t points_off_segments_ = 0;
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_map<uint64_t, uint32_t> input_edge_triangle_;  // input edge -> its first input triangle
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
@@ -821,9 +830,9 @@ RefinedPlc Refinement::next(RefinedPlc&& last) {
   std::unique_ptr<Refiner> refiner;
   if (!m.kept || m.kept->delaunay) {  // the first attempt, or one after an attempt that added no point
     last = {};  // freed first: its tetrahedralization is as large as the one kept
-    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::LeftAsTheyAre, m.kept ? std::move(m.kept->delaunay) : nullptr);
+    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::NotLookedFor, m.kept ? std::move(m.kept->delaunay) : nullptr);
   } else {
-    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::LeftAsTheyAre, std::move(last), std::move(*m.kept));
+    refiner = std::make_unique<Refiner>(m.input, m.options, &m.required, Folds::NotLookedFor, std::move(last), std::move(*m.kept));
     last = {};
   }
   m.kept.reset();
