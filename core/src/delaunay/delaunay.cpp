@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -380,21 +379,34 @@ class Delaunay {
   }
 
   // The ghosts' facets through the infinite vertex, linked in pairs: those with the same finite
-  // vertices (a ridge of the hull) face each other.
+  // vertices (a ridge of the hull) face each other. Sorted, not a map: on a surface whose vertices
+  // are all on the hull (a sphere) a tetrahedralization taken back (adopt) has a ghost per surface
+  // triangle, and a map of their ridges was half of adopting it.
   void link_ghosts(const std::vector<uint32_t>& ghosts) {
-    std::map<std::array<uint32_t, D - 1>, std::pair<uint32_t, int>> open;
+    struct Open {
+      std::array<uint32_t, D - 1> ridge;
+      uint32_t ghost;
+      int facet;
+    };
+    std::vector<Open> open;
+    open.reserve(ghosts.size() * D);
     for (const uint32_t g : ghosts) {
       const int at = infinite_index(g);
       for (int j = 0; j <= D; ++j) {
         if (j == at) continue;
-        std::array<uint32_t, D - 1> ridge;
+        Open o{{}, g, j};
         for (int k = 0, r = 0; k <= D; ++k)
-          if (k != at && k != j) ridge[r++] = cells_[g].v[k];
-        std::sort(ridge.begin(), ridge.end());
-        const auto [it, first] = open.emplace(ridge, std::pair{g, j});
-        if (!first) link(g, j, it->second.first, it->second.second);
+          if (k != at && k != j) o.ridge[r++] = cells_[g].v[k];
+        std::sort(o.ridge.begin(), o.ridge.end());
+        open.push_back(o);
       }
     }
+    std::sort(open.begin(), open.end(), [](const Open& x, const Open& y) { return x.ridge < y.ridge; });
+    for (std::size_t k = 0; k + 1 < open.size(); ++k)
+      if (open[k].ridge == open[k + 1].ridge) {
+        link(open[k].ghost, open[k].facet, open[k + 1].ghost, open[k + 1].facet);
+        ++k;
+      }
   }
 
   // ------------------------------------------------------------------------------------------
