@@ -313,7 +313,7 @@ Triangulation<D> run(const Plc<D>& plc, const Options& options, CdtStatistics& s
       tri.num_input_points = refined.num_input_points;
       tri.steiner_on = std::move(refined.steiner_on);
       if (options.remove_steiner_points && !tri.steiner_on.empty()) {
-        const detail::SteinerDeletions deletions = detail::remove_steiner_points(tri, refined.plc, refined.made_from, options);
+        const detail::SteinerDeletions deletions = detail::remove_steiner_points(tri, refined.plc, refined.made_from, refined.off_input, options);
         stats.steiner_points_removed = deletions.removed;
         stats.steiner_deletions_tried = deletions.tried;
         stats.steiner_retries_skipped = deletions.skipped;

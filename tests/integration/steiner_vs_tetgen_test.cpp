@@ -22,6 +22,7 @@
 #include "sweepcdt/io/to_plc.h"
 #include "sweepcdt/io/write_surface.h"
 #include "sweepcdt/validate.h"
+#include "sweepcdt/predicates/orientation.h"
 #include "cad_noise.h"
 #include "edit/remove_steiner.h"
 #include "sweepcdt/io/verify_mesh.h"
@@ -285,6 +286,65 @@ TEST(SteinerDeletion, GrowthBoundKeepsThinWallMeshesSmall) {
     ADD_FAILURE() << "vertex " << v << ": the bounded mesh deletes it too";
   } catch (const VertexRemovalError& e) {
     EXPECT_NE(std::string(e.what()).find("limit_growth"), std::string::npos) << e.what();
+  }
+}
+
+// The deletion pass tells the mesh which input facets lie exactly in their planes (no Steiner point
+// of theirs rounded off it: know_flat_facets), so that an early refusal need not test their pieces'
+// flatness. Told so by an independent test here (every vertex of a tag's constraints in the plane of
+// its first one), the mesh must refuse and delete exactly as one that tests every time, point by
+// point: on a float surface, where nearly every facet is flat, and on one with double coordinates,
+// where refinement's points bend some.
+TEST(SteinerDeletion, FacetsKnownFlatChangeNoDeletion) {
+  for (const char* name : {"pipe_tee_std.stl", "rotated_box_fine.obj"}) {
+    const Plc<3> plc = io::import_plc(std::filesystem::path(SWEEPCDT_TEST_DATA) / "cad" / name);
+    Options keep = mesh_defaults();
+    keep.remove_steiner_points = false;
+    Plc<3> refined;
+    const Triangulation<3> tri = cdt(plc, keep, &refined);
+    ASSERT_EQ(refined.tags.size(), refined.num_simplices()) << name;
+    uint32_t tags = 0;
+    for (const uint32_t t : refined.tags) tags = std::max(tags, t + 1);
+    std::vector<char> flat(tags, 1);
+    std::vector<uint32_t> first(tags, kNone);
+    for (uint32_t c = 0; c < refined.num_simplices(); ++c) {
+      uint32_t& f = first[refined.tags[c]];
+      if (f == kNone) f = c;
+      for (int i = 0; i < 3; ++i)
+        if (predicates::orient<3>({refined.point(refined.simplex(f)[0]), refined.point(refined.simplex(f)[1]),
+                                   refined.point(refined.simplex(f)[2]), refined.point(refined.simplex(c)[i])}) != predicates::Sign::Zero)
+          flat[refined.tags[c]] = 0;
+    }
+    const auto bent = static_cast<std::size_t>(std::count(flat.begin(), flat.end(), 0));
+    std::printf("  %s: %zu Steiner points, %zu of %u input facets bent\n", name, tri.num_points() - tri.num_input_points, bent, tags);
+    // Each deletion's answer, and a refusal's witness (proven refusals carry one, guessed ones none).
+    const auto answers = [&](const std::vector<char>* marks) {
+      EditableCdt<3> mesh(refined, tri);
+      mesh.unbend_facets_at_steiner_points(detail::kLargestBentStar);
+      mesh.guess_blocked_refusals(true);
+      mesh.limit_growth(detail::kGrowthFactor);
+      if (marks) mesh.know_flat_facets(*marks);
+      std::vector<std::vector<uint32_t>> result;
+      std::vector<uint32_t> neighbours, witness;
+      for (uint32_t v = tri.num_input_points; v < tri.num_points(); ++v) {
+        witness.clear();
+        const bool removed = mesh.try_commit_removal(mesh.plan_removal(v), neighbours, &witness);
+        result.push_back(removed ? std::vector<uint32_t>{kNone} : witness);
+      }
+      result.push_back({static_cast<uint32_t>(mesh.refused_early()), static_cast<uint32_t>(mesh.num_simplices())});
+      return result;
+    };
+    const auto tested = answers(nullptr);
+    EXPECT_GT(std::count(tested.begin(), tested.end(), std::vector<uint32_t>{kNone}), 0) << name << ": no deletion exercised";
+    EXPECT_GT(tested.back()[0], 0u) << name << ": no early refusal exercised";
+    EXPECT_TRUE(answers(&flat) == tested) << name;
+    if (std::string(name).ends_with(".obj")) {
+      ASSERT_GT(bent, 0u) << name << ": no bent facet, so no mark could be wrong";
+      // Not a comparison that holds whatever the marks say: every facet marked flat, bent ones too,
+      // turns guessed refusals into proven ones.
+      const std::vector<char> every(tags, 1);
+      EXPECT_FALSE(answers(&every) == tested) << name;
+    }
   }
 }
 

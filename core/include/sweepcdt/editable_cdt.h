@@ -117,6 +117,12 @@ class EditableCdt {
   // from deleted neighbours costs many times a point's own (cdt()'s deletion pass uses 32:
   // core/src/edit/remove_steiner.h).
   void unbend_facets_at_steiner_points(std::size_t largest_star);
+  // While unbending: per tag, whether every point of that input facet lies exactly in its plane (no
+  // Steiner point of it was rounded off its segment or placed inside it: cdt()'s refinement knows),
+  // so that its pieces around a point are flat without the exact orientation tests that would
+  // otherwise say so (zero, the predicates' slowest answer) before each early refusal below. Tags
+  // not listed are tested.
+  void know_flat_facets(std::vector<char> flat_by_tag);
   // While unbending, a Steiner point exactly on its segment, its facets' pieces around it flat, is
   // refused before its cavity is built (NoCdtError) when the segment its deletion would leave is not
   // Delaunay among the vertices of its star: proven, the star CDT would find no CDT either. With this

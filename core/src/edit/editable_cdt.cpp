@@ -77,6 +77,7 @@ struct EditableCdt<D>::Impl {
   bool has_tags = false;
   bool unbend = false;                 // unbend_facets_at_steiner_points()
   std::size_t unbend_largest_star = 0;
+  std::vector<char> flat_by_tag;        // EditableCdt::know_flat_facets()
   bool guess_blocked_refusals = false;  // EditableCdt::guess_blocked_refusals()
   unsigned growth_factor = 0;           // EditableCdt::limit_growth()
   std::vector<char> constraint_alive;
@@ -243,6 +244,8 @@ struct EditableCdt<D>::Impl {
   // Each piece's vertices are tested against the plane of its facet's first piece through v.
   bool flat_pieces_at(uint32_t v) const requires(D == 3) {
     const std::vector<uint32_t>& through = constraints_at[v];
+    if (std::all_of(through.begin(), through.end(), [&](uint32_t c) { return tags[c] < flat_by_tag.size() && flat_by_tag[tags[c]]; }))
+      return true;
     for (std::size_t i = 0; i < through.size(); ++i) {
       const uint32_t tag = tags[through[i]];
       if (std::any_of(through.begin(), through.begin() + i, [&](uint32_t c) { return tags[c] == tag; })) continue;  // not the first
@@ -1107,6 +1110,11 @@ template <int D>
 void EditableCdt<D>::unbend_facets_at_steiner_points(std::size_t largest_star) {
   impl_->unbend = largest_star > 0;
   impl_->unbend_largest_star = largest_star;
+}
+
+template <int D>
+void EditableCdt<D>::know_flat_facets(std::vector<char> flat_by_tag) {
+  impl_->flat_by_tag = std::move(flat_by_tag);
 }
 
 template <int D>

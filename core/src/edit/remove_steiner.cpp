@@ -29,10 +29,15 @@ std::vector<uint32_t> spread_order(uint32_t n) {
 }  // namespace
 
 SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
-                               const Options& options) {
+                               const std::vector<char>& off_input, const Options& options) {
   const uint32_t first = tri.num_input_points, end = static_cast<uint32_t>(tri.num_points());
+  // The input facets (tags) whose points all lie exactly in their planes: most, on float surfaces.
+  std::vector<char> flat_by_tag(plc.tags.empty() ? 0 : *std::max_element(plc.tags.begin(), plc.tags.end()) + std::size_t{1}, 1);
+  for (std::size_t c = 0; c < plc.tags.size(); ++c)
+    if (c >= off_input.size() || off_input[c]) flat_by_tag[plc.tags[c]] = 0;
   EditableCdt<3> mesh(std::move(plc), std::move(tri));
   mesh.unbend_facets_at_steiner_points(kLargestBentStar);  // plc's tags name input facets (cdt.cpp)
+  mesh.know_flat_facets(std::move(flat_by_tag));  // (perforated_tube_std: the deletion pass 0.9x)
   // A point rounded off its segment (double coordinates) whose merged segment is blocked by its
   // star's vertices is refused without its star CDT, which nearly always refuses it too: a wrong
   // guess keeps one point more, the CDT is still checked (EditableCdt::guess_blocked_refusals).

@@ -42,8 +42,10 @@ struct SteinerDeletions {
 // made from (refine.h); `sweepcdt check` recognises a Steiner point as a rounded split of those
 // two, so a point stays while a point made from it stays. (A point on a segment is made from the
 // segment's input ends when their difference is exact; only points on other segments and fold
-// points are made from Steiner points.) Throws CancelledError when `options.progress` says so.
+// points are made from Steiner points.) `off_input`: per constraint of `plc`, whether its facet holds
+// a point off the facet's plane (RefinedPlc::off_input); the others' pieces are flat. Throws
+// CancelledError when `options.progress` says so.
 SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const std::vector<std::array<uint32_t, 2>>& made_from,
-                               const Options& options);
+                               const std::vector<char>& off_input, const Options& options);
 
 }  // namespace sweepcdt::detail
