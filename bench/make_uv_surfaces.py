@@ -13,6 +13,8 @@ import os
 import struct
 import sys
 
+from run_cad import rotation  # bench/run_cad.py: the parts placed at an angle
+
 
 def write_stl(path, triangles):
     with open(path, "wb") as f:
@@ -27,12 +29,7 @@ def write_stl(path, triangles):
 
 def turned(triangles, axis=(0.2, 0.9, 0.1), degrees=40.0):
     """The surface turned about `axis`, as an object placed at an angle is exported."""
-    n = math.sqrt(sum(x * x for x in axis))
-    ux, uy, uz = (x / n for x in axis)
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    r = [[c + ux * ux * (1 - c), ux * uy * (1 - c) - uz * s, ux * uz * (1 - c) + uy * s],
-         [uy * ux * (1 - c) + uz * s, c + uy * uy * (1 - c), uy * uz * (1 - c) - ux * s],
-         [uz * ux * (1 - c) - uy * s, uz * uy * (1 - c) + ux * s, c + uz * uz * (1 - c)]]
+    r = rotation(degrees, axis)
     return [tuple(tuple(sum(r[i][k] * p[k] for k in range(3)) for i in range(3)) for p in t) for t in triangles]
 
 

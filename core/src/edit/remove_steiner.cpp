@@ -37,7 +37,7 @@ SteinerDeletions remove_steiner_points(Triangulation<3>& tri, Plc<3>& plc, const
     if (c >= off_input.size() || off_input[c]) flat_by_tag[plc.tags[c]] = 0;
   EditableCdt<3> mesh(std::move(plc), std::move(tri));
   mesh.unbend_facets_at_steiner_points(kLargestBentStar);  // plc's tags name input facets (cdt.cpp)
-  mesh.know_flat_facets(std::move(flat_by_tag));  // (perforated_tube_std: the deletion pass 0.9x)
+  mesh.know_flat_facets(std::move(flat_by_tag));  // their orientation tests: 4% of perforated_tube_std's pass
   // A point rounded off its segment (double coordinates) whose merged segment is blocked by its
   // star's vertices is refused without its star CDT, which nearly always refuses it too: a wrong
   // guess keeps one point more, the CDT is still checked (EditableCdt::guess_blocked_refusals).

@@ -94,8 +94,8 @@ using RequiredSegments = std::unordered_set<uint64_t>;
 // What becomes of the folds that are not Delaunay once the segments are: points inside their facets
 // until they are (the theorem's premise), or nothing (a CDT may well exist all the same), counted in
 // RefinedPlc::folds_left or not looked for at all — lazy refinement's attempts (Refinement), where
-// the cavity sweep decides and nothing reads the count: looking for them was a map of every facet
-// edge, 5% of perforated_tube_std's run.
+// the cavity sweep decides and nothing reads the count: looking for them mapped every facet edge
+// each round (236 of perforated_tube_std's 8456 samples).
 enum class Folds { MadeDelaunay, LeftAsTheyAre, NotLookedFor };
 
 // A pass of refinement that adds at least this many points inserts them into the Delaunay
