@@ -95,7 +95,7 @@ class Refiner {
       tris_.push_back({last.plc.simplices[t], last.plc.simplices[t + 1], last.plc.simplices[t + 2]});
     unflipped_.assign(tris_.size(), 0);  // every facet flipped at the end of the last attempt
     bent_.assign(r_.num_input_points, 0);
-    for (uint32_t m = r_.num_input_points; m < points_.size() / 3; ++m) add_bent(!exactly_on_its_segment(m));
+    for (uint32_t m = r_.num_input_points; m < points_.size() / 3; ++m) bent_.push_back(!exactly_on_its_segment(m));
     prepared_ = looked_ = continues_ = true;
     pieces_of_segments();
   }
@@ -212,10 +212,6 @@ class Refiner {
     return u != kNone && strictly_inside_segment<3>(p(u), p(m), p(v));
   }
   bool is_input(uint32_t v) const { return v < r_.num_input_points; }
-  void add_bent(bool bent) {
-    bent_.push_back(bent);
-    points_off_segments_ += bent;
-  }
 
   // Whether the piece ab of a segment must be Delaunay: with every segment required, or when it
   // lies on a required input segment, or is a fold made a segment (or on one, inside a facet).
@@ -289,7 +285,7 @@ class Refiner {
       // Folds come from Steiner points off their segments (rounded) or inside facets: without any,
       // every facet is exactly flat (on float surfaces nearly always: refine.h), and looking for
       // folds, a map of every facet edge each round, was a tenth of perforated_tube_fine's refinement.
-      if (points_off_segments_ == 0) {
+      if (std::none_of(bent_.begin(), bent_.end(), [](char b) { return b != 0; })) {
         r_.delaunay = delaunay.mesh();
         return;
       }
@@ -516,7 +512,7 @@ class Refiner {
       points_.insert(points_.end(), x, x + 3);
       locate_from_.push_back(a);
       on_segment_.push_back({kNone, kNone});
-      add_bent(true);
+      bent_.push_back(true);
       parameter_.push_back(0.0);
       r_.steiner_on.push_back(kNone);  // set by split_triangles, as for a segment's point
       r_.made_from.push_back({a, b});
@@ -683,7 +679,7 @@ class Refiner {
     points_.insert(points_.end(), x, x + 3);
     locate_from_.push_back(a);
     on_segment_.push_back(segment);  // a fold segment's point is inside the facet, on no input segment
-    add_bent(!exactly_on_its_segment(m));
+    bent_.push_back(!exactly_on_its_segment(m));
     parameter_.push_back(along_segment ? t : 0.0);
     // On an input segment: the first input triangle with that edge, which holds every point of it
     // (a triangle holding the piece may not: facet flips move triangles across the input triangles
@@ -807,9 +803,8 @@ class Refiner {
   bool continues_ = false;                // made again from what an earlier refiner set aside (splits())
   std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
   // Per point: a Steiner point not exactly on its input segment, or inside a facet (the others lie in
-  // the planes of the facets that hold them); and how many.
+  // the planes of the facets that hold them).
   std::vector<char> bent_;
-  std::size_t points_off_segments_ = 0;
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   std::unordered_map<uint64_t, uint32_t> input_edge_triangle_;  // input edge -> its first input triangle
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves

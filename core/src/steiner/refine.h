@@ -45,9 +45,11 @@
 // Lazy refinement (cdt.cpp, on float surfaces) asks for less: only the pieces of the required input
 // segments, and, from its second attempt with points on (Refinement), of the segments that were
 // Delaunay until that attempt's points broke them; the rest stay as they are, and the cavity sweep
-// decides exactly whether the result has a CDT. Folds::LeftAsTheyAre (cdt.cpp: the first refinements, for
-// every algorithm) likewise stops once the segments are Delaunay and the facets flipped: the folds
-// that are still not Delaunay get no points, and the algorithm decides whether the CDT needs them.
+// decides exactly whether the result has a CDT; its attempts leave folds as they are without even
+// looking for them (Folds::NotLookedFor). Folds::LeftAsTheyAre (cdt.cpp: the first refinement of
+// every segment, for every algorithm) likewise stops once the segments are Delaunay and the facets
+// flipped: the folds that are still not Delaunay get no points, only counted, and the algorithm
+// decides whether the CDT needs them.
 #pragma once
 #include <array>
 #include <cstdint>
