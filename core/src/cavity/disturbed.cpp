@@ -129,8 +129,8 @@ Disturbed disturbed_simplices(const Plc<D>& plc, const DelaunayMesh& dt, const s
       ++stamp;
       const uint32_t* constraint = plc.simplex(missing[k]);
       // The simplices around the constraint's vertex a with the fewest: a walk across the facets
-      // through a. (Each is tested; an input vertex at the apex of a fan across a flat face can have
-      // hundreds, and a Steiner point on its edge a few dozen.)
+      // through a (no exact test; an input vertex at the apex of a fan across a flat face can have
+      // hundreds, and a Steiner point on its edge a few dozen).
       const uint32_t a =
           *std::min_element(constraint, constraint + D, [&](uint32_t x, uint32_t y) { return degree[x] < degree[y]; });
       queue.clear();
@@ -142,12 +142,32 @@ Disturbed disturbed_simplices(const Plc<D>& plc, const DelaunayMesh& dt, const s
           const uint32_t nb = dt.neighbors[kVertices * t + i];
           if (dt.tets[kVertices * t + i] != a && nb != kNone && visit(nb / kVertices)) star.push_back(nb / kVertices);
         }
-        if (disturbs<D>(plc, &dt.tets[kVertices * t], constraint)) queue.push_back(t);
       }
+      // One disturbed simplex is enough to start from: the disturbed simplices are connected across
+      // facets (disturbed.h). Those that hold a whole edge of the constraint through a are tested first:
+      // when that edge is a Delaunay edge, the constraint's points next to it lie in one of them, or
+      // in a facet of one (overlapped improperly, as the constraint is no Delaunay face), so one of
+      // them is disturbed: a ring of about five simplices, where the star holds a few dozen (the
+      // exact tests are most of the search). The rest of the star is tested after them.
+      const auto holds_edge_of_constraint = [&](uint32_t t) {
+        for (int i = 0; i < kVertices; ++i) {
+          const uint32_t v = dt.tets[kVertices * t + i];
+          if (v != a && std::find(constraint, constraint + D, v) != constraint + D) return true;
+        }
+        return false;
+      };
+      std::stable_partition(star.begin(), star.end(), holds_edge_of_constraint);
+      for (const uint32_t t : star)
+        if (disturbs<D>(plc, &dt.tets[kVertices * t], constraint)) {
+          queue.push_back(t);
+          break;
+        }
       if (queue.empty()) {  // impossible for a missing constraint: fall back
         none_found = true;
         return;
       }
+      ++stamp;  // the star was only walked: the search tests its simplices as it reaches them
+      visit(queue.front());
       result.first[k] = queue.front();
       // Then outward through neighbours from every disturbed simplex.
       for (std::size_t head = 0; head < queue.size(); ++head) {
