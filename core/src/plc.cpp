@@ -12,6 +12,7 @@
 #include "parallel.h"
 #include "refined_check.h"
 #include "simplex_intersection.h"
+#include "tuple_map.h"
 #include "sweepcdt/plc.h"
 #include "sweepcdt/predicates/orientation.h"
 
@@ -134,22 +135,30 @@ void check_duplicate_points(const Plc<D>& plc, ProblemList& problems) {
   }
 }
 
-// Marks degenerate and duplicate simplices (excluded from the intersection tests).
+// Marks degenerate and duplicate simplices (excluded from the intersection tests), reported in
+// simplex order. The shapes are tested in parts on `threads` threads (parallel.h); the earlier
+// simplex with the same vertices is looked up in a flat hash map (a std::map of every simplex was
+// two thirds of each lazy attempt's check of its refined PLC, 16 ms of 18 on a 75k-triangle scan).
 template <int D>
-std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems) {
-  std::vector<char> usable(plc.num_simplices(), 1);
-  std::map<std::array<uint32_t, D>, std::size_t> seen;
-  for (std::size_t j = 0; j < plc.num_simplices(); ++j) {
-    if (degenerate<D>(simplex_coords(plc, j))) {
+std::vector<char> check_simplex_shapes(const Plc<D>& plc, ProblemList& problems, unsigned threads) {
+  const std::size_t m = plc.num_simplices();
+  std::vector<char> flat(m, 0);
+  detail::for_each_part(m, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) flat[j] = degenerate<D>(simplex_coords(plc, j));
+  });
+  std::vector<char> usable(m, 1);
+  detail::TupleMap<D> seen(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    if (flat[j]) {
       problems.add(PlcProblemKind::DegenerateSimplex, {j}, "simplex " + n(j) + " is degenerate (its vertices are affinely dependent)");
       usable[j] = 0;
       continue;
     }
     auto ids = simplex_ids(plc, j);
     std::sort(ids.begin(), ids.end());
-    const auto [it, inserted] = seen.emplace(ids, j);
+    const auto [first, inserted] = seen.emplace(ids, static_cast<uint32_t>(j));
     if (!inserted) {
-      problems.add(PlcProblemKind::DuplicateSimplex, {it->second, j}, "simplices " + n(it->second) + " and " + n(j) + " have the same vertices");
+      problems.add(PlcProblemKind::DuplicateSimplex, {first, j}, "simplices " + n(first) + " and " + n(j) + " have the same vertices");
       usable[j] = 0;
     }
   }
@@ -260,7 +269,7 @@ std::vector<PlcProblem> find_problems_keeping(const Plc<D>& plc, std::size_t lim
   ProblemList problems(limit_per_kind);
   if (check_structure(plc, problems) && !(plc.checked && plc.checked->covers(plc))) {
     check_duplicate_points(plc, problems);
-    const auto usable = check_simplex_shapes(plc, problems);
+    const auto usable = check_simplex_shapes(plc, problems, threads);
     check_intersections(plc, usable, problems, threads);
   }
   if (total) *total = problems.total();
@@ -306,7 +315,7 @@ void check_refined(const Plc<D>& plc, const std::vector<char>& suspect, unsigned
   ProblemList problems(10);
   if (check_structure(plc, problems)) {
     check_duplicate_points(plc, problems);
-    const auto usable = check_simplex_shapes(plc, problems);
+    const auto usable = check_simplex_shapes(plc, problems, threads);
     check_intersections(plc, usable, problems, threads, &suspect);
   }
   if (problems.total() > 0) {
