@@ -1,10 +1,10 @@
 #include "refine.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -16,6 +16,7 @@
 #include "../delaunay/delaunay.h"
 #include "../delaunay/in_background.h"
 #include "../delaunay/kept_tetrahedralization.h"
+#include "coordinate_set.h"
 #include "facet_flips.h"
 #include "facet_groups.h"
 #include "spacing_grid.h"
@@ -180,8 +181,10 @@ class Refiner {
   // Every point's coordinates, and every segment in triangle order for the first look at them: once,
   // before the first round that may add points (while the tetrahedralization is computed beside).
   void prepare_to_add_points() {
-    if (coordinates_.empty())
-      for (uint32_t v = 0; v < points_.size() / 3; ++v) coordinates_.insert(key_of(p(v)));
+    if (coordinates_.empty()) {
+      coordinates_.reserve(points_.size() / 3);
+      for (uint32_t v = 0; v < points_.size() / 3; ++v) coordinates_.insert(p(v));
+    }
     if (prepared_) return;
     prepared_ = true;
     for_each_segment([&](uint64_t key) { first_segments_.push_back(key); }, [](uint32_t, uint32_t) { return true; });
@@ -491,7 +494,7 @@ class Refiner {
       double x[3];
       point_on_segment(p(a), p(b), 0.5, x);
       const double radius = 0.5 * std::sqrt(-minus_length2);
-      if (coordinates_.count(key_of(x)) || grid.any_within(x, radius)) continue;
+      if (coordinates_.contains(x) || grid.any_within(x, radius)) continue;
       // A midpoint inside a segment's diametral ball would make that segment not Delaunay, and
       // split it next round right beside the new point: split the segment instead (Ruppert).
       bool encroaches = false;
@@ -507,7 +510,7 @@ class Refiner {
         continue;
       }
       grid.add(x);
-      coordinates_.insert(key_of(x));
+      coordinates_.insert(x);
       const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
       points_.insert(points_.end(), x, x + 3);
       locate_from_.push_back(a);
@@ -547,15 +550,6 @@ class Refiner {
     const double* a = p(static_cast<uint32_t>(key >> 32));
     const double* b = p(static_cast<uint32_t>(key));
     return (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]);
-  }
-
-  struct CoordinatesHash {
-    std::size_t operator()(const std::array<uint64_t, 3>& x) const {
-      return std::hash<uint64_t>()(x[0] * 0x9E3779B97F4A7C15ull ^ (x[1] + 0x632BE59BD9B4E019ull) * 31 ^ x[2]);
-    }
-  };
-  static std::array<uint64_t, 3> key_of(const double* x) {
-    return {std::bit_cast<uint64_t>(x[0]), std::bit_cast<uint64_t>(x[1]), std::bit_cast<uint64_t>(x[2])};
   }
 
   // Each facet to its 2D CDT — only the facets with a triangle changed since their last flips (split,
@@ -671,10 +665,10 @@ class Refiner {
     // 120k-triangle scan did, and the Delaunay triangulation then refused the duplicate): another
     // point of the piece instead (`sweepcdt check` recognises any: sweepcdt/steiner_point.h).
     for (const double f : {0.5, 0.25, 0.75})
-      if (coordinates_.count(key_of(x))) point_on_segment(u, v, t = ta + f * (tb - ta), x);
-    if (coordinates_.count(key_of(x)))
+      if (coordinates_.contains(x)) point_on_segment(u, v, t = ta + f * (tb - ta), x);
+    if (coordinates_.contains(x))
       throw NoCdtError("Steiner points: a segment is too short to split in double precision", {a, b});
-    coordinates_.insert(key_of(x));
+    coordinates_.insert(x);
     const uint32_t m = static_cast<uint32_t>(points_.size() / 3);
     points_.insert(points_.end(), x, x + 3);
     locate_from_.push_back(a);
@@ -699,10 +693,13 @@ class Refiner {
   }
 
   uint32_t first_input_triangle_with(uint32_t u, uint32_t v) {
-    if (input_edge_triangle_.empty())
-      for (uint32_t j = static_cast<uint32_t>(groups_.triangles.size()); j-- > 0;)  // the first one last: it stays
-        for (int i = 0; i < 3; ++i) input_edge_triangle_[edge_key(groups_.triangles[j][i], groups_.triangles[j][(i + 1) % 3])] = j;
-    return input_edge_triangle_.at(edge_key(u, v));
+    const auto key = [](uint32_t a, uint32_t b) { return std::array<uint32_t, 2>{std::min(a, b), std::max(a, b)}; };
+    if (input_edge_triangle_.size() == 0)
+      for (uint32_t j = 0; j < groups_.triangles.size(); ++j)  // the first one stays
+        for (int i = 0; i < 3; ++i) input_edge_triangle_.emplace(key(groups_.triangles[j][i], groups_.triangles[j][(i + 1) % 3]), j);
+    const uint32_t j = input_edge_triangle_.find(key(u, v));
+    if (j == TupleMap<2>::kAbsent) throw std::logic_error("refine: a Steiner point's segment is no input edge");
+    return j;
   }
 
   // A parameter near t, strictly inside (ta, tb), at which the point u + t (v - u) of a segment whose
@@ -806,9 +803,9 @@ class Refiner {
   // the planes of the facets that hold them).
   std::vector<char> bent_;
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
-  std::unordered_map<uint64_t, uint32_t> input_edge_triangle_;  // input edge -> its first input triangle
+  TupleMap<2> input_edge_triangle_;  // input edge (its ends, sorted) -> its first input triangle
   std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
-  std::unordered_set<std::array<uint64_t, 3>, CoordinatesHash> coordinates_;  // every point's, bit for bit
+  CoordinateSet coordinates_;  // every point's, bit for bit
 };
 
 }  // namespace
