@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <set>
-#include <unordered_set>
 #include <vector>
 
 #include "delaunay/delaunay.h"
@@ -29,7 +28,7 @@ using Triangle = std::array<uint32_t, 3>;
 struct FannedFacet {
   std::vector<double> points;  // n x 3
   std::vector<Triangle> triangles;
-  std::unordered_set<uint64_t> segments;
+  detail::EdgeSet segments;
   std::vector<std::array<uint32_t, 2>> on_segment;
 
   explicit FannedFacet(uint32_t k) {
@@ -140,7 +139,7 @@ TEST(FacetFlips, FoldsFlipAsIfEveryPointWereBent) {
                m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]) > 0;
   };
   std::vector<Triangle> grid;
-  std::unordered_set<uint64_t> boundary;
+  detail::EdgeSet boundary;
   for (uint32_t i = 0; i + 1 < n; ++i)
     for (uint32_t j = 0; j + 1 < n; ++j) {
       const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);  // counterclockwise

@@ -12,8 +12,9 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <unordered_set>
 #include <vector>
+
+#include "edge_set.h"
 
 namespace sweepcdt::detail {
 
@@ -21,7 +22,7 @@ struct FacetTriangles {
   const std::vector<double>& points;                 // n x 3
   std::vector<std::array<uint32_t, 3>>& triangles;   // oriented alike within each facet; two that share
                                                      // an edge that is not a segment are in one facet
-  const std::unordered_set<uint64_t>& segments;      // never flipped
+  const EdgeSet& segments;                           // never flipped
   // Per point: the input segment (two input vertex ids, sorted) a Steiner point lies on, or
   // {kNone, kNone} for input points. A flip never joins two points of one segment.
   const std::vector<std::array<uint32_t, 2>>& on_segment;

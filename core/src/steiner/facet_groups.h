@@ -9,9 +9,9 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
+#include "edge_set.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
@@ -25,7 +25,7 @@ inline uint64_t edge_key(uint32_t a, uint32_t b) {
 // only one is known); `first_seen`, if given, gets the keys in triangle order (deterministic, unlike
 // the map's iteration order).
 using EdgeSides = std::unordered_map<uint64_t, std::array<uint32_t, 2>>;
-inline EdgeSides interior_edge_sides(const std::vector<std::array<uint32_t, 3>>& triangles, const std::unordered_set<uint64_t>& segments,
+inline EdgeSides interior_edge_sides(const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeSet& segments,
                                      std::vector<uint64_t>* first_seen = nullptr) {
   EdgeSides sides;
   sides.reserve(triangles.size() * 3 / 2);  // about as many edges: no rehashing as it fills
@@ -53,7 +53,7 @@ struct FacetGroups {
   std::vector<ExteriorSide> exterior;              // per triangle, after re-orientation
   std::vector<uint32_t> facet;                     // per triangle: its facet, numbered 0..num_facets-1
   std::vector<uint32_t> first_triangle;            // per facet: its smallest input triangle index
-  std::unordered_set<uint64_t> segments;           // edge_key of every segment
+  EdgeSet segments;                                // edge_key of every segment
   std::size_t num_facets() const { return first_triangle.size(); }
 };
 

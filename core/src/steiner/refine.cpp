@@ -8,7 +8,6 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "../parallel.h"
 #include "../segment_interior.h"
@@ -106,7 +105,7 @@ class Refiner {
   // edge between two such points lies along it, and a triangle edge holds no point inside: its
   // triangles were split there); and the folds made segments.
   void pieces_of_segments() {
-    std::unordered_set<uint64_t> pieces(fold_segments_.begin(), fold_segments_.end());
+    EdgeSet pieces(fold_segments_.begin(), fold_segments_.end());
     for (const Triangle& t : tris_)
       for (int i = 0; i < 3; ++i) {
         const uint32_t a = t[i], b = t[(i + 1) % 3];
@@ -432,7 +431,7 @@ class Refiner {
 
   // Segments are added and removed here, so that segment_neighbours_, once built, follows.
   void add_segment(uint64_t key) {
-    if (groups_.segments.insert(key).second) link_segment(key, true);
+    if (groups_.segments.insert(key)) link_segment(key, true);
   }
   void remove_segment(uint64_t key) {
     if (groups_.segments.erase(key)) link_segment(key, false);
@@ -798,13 +797,13 @@ class Refiner {
   std::vector<uint64_t> required_before_;  // sorted: the input segments required in the last attempt
   std::vector<uint32_t> locate_from_;     // per point added since the tetrahedralization took the last ones: an end of what it split
   bool continues_ = false;                // made again from what an earlier refiner set aside (splits())
-  std::unordered_set<uint64_t> tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
+  EdgeSet tolerated_;  // not required and not Delaunay when first looked at, or broken by a first refiner (splits())
   // Per point: a Steiner point not exactly on its input segment, or inside a facet (the others lie in
   // the planes of the facets that hold them).
   std::vector<char> bent_;
   std::vector<uint32_t> near_;  // encroacher_projection's candidates
   TupleMap<2> input_edge_triangle_;  // input edge (its ends, sorted) -> its first input triangle
-  std::unordered_set<uint64_t> fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
+  EdgeSet fold_segments_;  // folds made segments (fold_edges_not_in), and their halves
   CoordinateSet coordinates_;  // every point's, bit for bit
 };
 
