@@ -7,6 +7,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <iterator>
 #include <utility>
 #include <vector>
@@ -18,8 +19,9 @@ class EdgeSet {
   EdgeSet() = default;
   template <class It>
   EdgeSet(It first, It last) {
-    for (; first != last; ++first) insert(*first);
+    insert(first, last);
   }
+  EdgeSet(std::initializer_list<uint64_t> keys) { insert(keys.begin(), keys.end()); }
 
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }

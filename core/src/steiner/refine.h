@@ -55,10 +55,10 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <unordered_set>
 #include <vector>
 
 #include "../delaunay/delaunay.h"
+#include "edge_set.h"
 #include "sweepcdt/cdt.h"
 
 namespace sweepcdt::detail {
@@ -91,7 +91,7 @@ struct RefinedPlc {
 
 // Input segments (edge_key of their ends) whose pieces must be Delaunay; the others are left as they
 // are. Lazy refinement (cdt.cpp) starts with none and adds those of the cavities that find no CDT.
-using RequiredSegments = std::unordered_set<uint64_t>;
+using RequiredSegments = EdgeSet;
 
 // What becomes of the folds that are not Delaunay once the segments are: points inside their facets
 // until they are (the theorem's premise), or nothing (a CDT may well exist all the same), counted in
