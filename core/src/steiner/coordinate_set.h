@@ -1,9 +1,9 @@
 // Every point's coordinates, bit for bit, for refinement's question whether a new Steiner point
 // rounds onto a point that is there already (refine.cpp: then it takes another parameter). A flat
 // open-addressing set: linear probing, at most three quarters full (about the memory of the
-// node-based set it replaces), no allocation per point. (A
-// std::unordered_set's node per point, built again for each lazy attempt and freed after it, was a
-// third of the hash-table and allocator work of refinement on a 75k-triangle scan.)
+// node-based set it replaces), no allocation per point. A std::unordered_set's node per point,
+// built again for each lazy attempt and freed after it, was a third of the hash-table and
+// allocator work of refinement on a 75k-triangle scan.
 #pragma once
 #include <array>
 #include <bit>
@@ -16,7 +16,6 @@ namespace sweepcdt::detail {
 class CoordinateSet {
  public:
   bool empty() const { return size_ == 0; }
-  std::size_t size() const { return size_; }
 
   // Room for n points without growing.
   void reserve(std::size_t n) {

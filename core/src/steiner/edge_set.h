@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <initializer_list>
 #include <iterator>
-#include <utility>
 #include <vector>
 
 namespace sweepcdt::detail {
