@@ -10,21 +10,19 @@ Usage: bench/make_uv_surfaces.py DIR    (then bench/run_cad.py DIR/*.stl)
 """
 import math
 import os
-import struct
 import sys
 
-from run_cad import rotation  # bench/run_cad.py: the parts placed at an angle
+from run_cad import ROOT, rotation  # bench/run_cad.py: the parts placed at an angle
+
+sys.path.insert(0, os.path.join(ROOT, "tests", "data", "scan"))
+import make_scan_surfaces  # noqa: E402  (its binary STL writer)
 
 
 def write_stl(path, triangles):
-    with open(path, "wb") as f:
-        f.write(b"sweepcdt bench/make_uv_surfaces.py".ljust(80, b" "))
-        f.write(struct.pack("<I", len(triangles)))
-        for t in triangles:
-            f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
-            for p in t:
-                f.write(struct.pack("<3f", *p))
-            f.write(b"\0\0")
+    """Triangles given by their corners' coordinates, as binary STL (float32)."""
+    points = [p for t in triangles for p in t]
+    make_scan_surfaces.write_stl(path, points, [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(len(triangles))],
+                                 header=b"sweepcdt bench/make_uv_surfaces.py")
 
 
 def turned(triangles, axis=(0.2, 0.9, 0.1), degrees=40.0):

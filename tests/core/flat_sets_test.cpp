@@ -1,5 +1,5 @@
-// Refinement's flat sets (core/src/steiner/edge_set.h, coordinate_set.h). Their oracle is
-// std::unordered_set, driven through the same random insert/erase/count sequence. Keys come from a
+// Refinement's flat sets (core/src/flat_set.h, as steiner/edge_set.h and coordinate_set.h use it).
+// Their oracle is std::unordered_set, driven through the same random insert/erase/count sequence. Keys come from a
 // small range, so probe runs are long, wrap around the table's end and get holes shifted back into
 // them by erase().
 #include <gtest/gtest.h>

@@ -126,9 +126,10 @@ def displaced_icosphere(level, size=50.0):
     return bumped, triangles
 
 
-def write_stl(path, points, triangles):
+def write_stl(path, points, triangles, header=b"scan-like surface"):
+    """Binary STL (float32) of indexed triangles; bench/make_uv_surfaces.py writes its surfaces with it."""
     with open(path, "wb") as out:
-        out.write(b"scan-like surface".ljust(80, b" "))
+        out.write(header.ljust(80, b" "))
         out.write(struct.pack("<I", len(triangles)))
         for tri in triangles:
             out.write(struct.pack("<3f", 0, 0, 0))
