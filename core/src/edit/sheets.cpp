@@ -218,7 +218,9 @@ class SheetBuilder {
       for (const auto& t : sheet.fill)
         for (int i = 0; i < 3; ++i) {
           const uint32_t x = t[(i + 2) % 3], s = t[i], y = t[(i + 1) % 3];
-          if (s >= unbend_->first_steiner && unbend_->ridge(x, s) && unbend_->ridge(s, y)) return false;
+          // ridge(s, ·) looks among s's constraints: a Steiner point has a few, where an input vertex
+          // at the apex of a CAD fan has dozens (x first, that scan was a quarter of sheets_without()).
+          if (s >= unbend_->first_steiner && unbend_->ridge(s, x) && unbend_->ridge(s, y)) return false;
         }
       const auto& c0 = through_v_[sheet.constraints.front()];
       double n[3];

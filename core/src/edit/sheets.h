@@ -33,7 +33,7 @@ struct Sheet {
 // cavity exactly, and refuses the deletion when the fill does not fit in it).
 struct Unbend {
   uint32_t first_steiner;                          // ids from here on are Steiner points
-  std::function<bool(uint32_t, uint32_t)> ridge;   // edge ab lies on pieces of two facets
+  std::function<bool(uint32_t, uint32_t)> ridge;   // edge ab lies on pieces of two facets (looked up among a's constraints)
 };
 template <int D>
 std::vector<Sheet<D>> sheets_without(uint32_t v, const std::vector<std::array<uint32_t, D>>& through_v,
