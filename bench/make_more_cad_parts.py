@@ -4,7 +4,9 @@ do not cover, modelled with FreeCAD's Part workbench and exported as a FreeCAD u
 STL. Session 14 found two parts here that failed by default (sphere_with_holes_fine: the round
 limit; the hollow sphere is committed as tests/data/cad/hollow_sphere_*.ply). Not committed (about
 20 MB); made in about a minute whenever the bench runs. Session 30's fine perforated tube is the
-slow one to mesh: about 160 s for sweepcdt, 40 s for `tetgen -pQ`.
+slow one to mesh: about 160 s for sweepcdt, 40 s for `tetgen -pQ`; session 40's drilled board
+placed at an angle at fine deflection the other (191 s and 1.4 GB; `tetgen -pQM`, which keeps every
+triangle as we do, aborts after 35 s; `-pQ` merges its faces within 1e-8 and takes 0.14 s).
 
 Run with Debian's FreeCAD (freecad-python3):
     /usr/bin/python3 bench/make_more_cad_parts.py OUT_DIR
@@ -171,14 +173,49 @@ def far_bracket():  # a filleted, drilled bracket placed at an angle 8 m from th
     return b
 
 
+# Session 40: thin-walled prints and a drilled board, the kind of part that reaches the point budget
+# when placed at an angle (faces flat only up to rounding, fanned between small holes).
+def thin_cup():  # a 0.8 mm walled cup, as printed in vase mode
+    c = Part.makeCylinder(25, 60)
+    return c.makeThickness([f for f in c.Faces if abs(f.CenterOfMass.z - 60) < 1e-6], -0.8, 1e-3)
+
+
+def thin_enclosure():  # a 1 mm shelled box with rounded vertical edges and six vent slots in its floor
+    b = Part.makeBox(90, 60, 25)
+    b = b.makeFillet(4, [e for e in b.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[-1].Point.z) > 1])
+    b = b.makeThickness([f for f in b.Faces if abs(f.CenterOfMass.z - 25) < 1e-6], -1.0, 1e-3)
+    for i in range(6):
+        b = b.cut(Part.makeBox(3, 30, 5, V(20 + 9 * i, 15, -1)))
+    return b
+
+
+def long_rod():  # a 1 m rod of 2 mm diameter with a 0.8 mm cross hole every 100 mm
+    r = Part.makeCylinder(1, 1000, V(0, 0, 0), V(1, 0, 0))
+    for i in range(1, 10):
+        r = r.cut(Part.makeCylinder(0.4, 4, V(100 * i, 0, -2), V(0, 0, 1)))
+    return r
+
+
+def pcb_standoffs():  # a 1.6 mm board with 40 holes of 1 mm and four drilled standoffs
+    p = Part.makeBox(100, 80, 1.6)
+    for i in range(8):
+        for j in range(5):
+            p = p.cut(Part.makeCylinder(0.5, 3, V(10 + 11 * i, 10 + 14 * j, -1)))
+    for (x, y) in [(4, 4), (96, 4), (4, 76), (96, 76)]:
+        p = p.fuse(Part.makeCylinder(2.5, 8, V(x, y, 1.6))).cut(Part.makeCylinder(1.2, 12, V(x, y, -1)))
+    return p.removeSplitter()
+
+
 PARTS = {"sheet": sheet, "shaft": shaft, "sphere_with_holes": sphere_with_holes, "chamfered_block": chamfered_block,
          "ring_torus": ring_torus, "loft": loft, "offset_plate": offset_plate, "bolt": bolt, "elbow": elbow,
          "bearing_ring": bearing_ring, "frustum": frustum, "boss_plate": boss_plate, "knob": knob,
          "cube_void": cube_void, "enclosure": enclosure, "tiny_fillet": tiny_fillet,
          "perforated_tube": perforated_tube, "oblique_cylinders": oblique_cylinders, "spring": spring,
          "ribbed_housing": ribbed_housing, "knurled_knob": knurled_knob, "twisted_loft": twisted_loft,
-         "far_bracket": far_bracket}
-TILTED = {"sheet", "bolt", "frustum", "boss_plate"}  # also placed at an angle (standard deflection)
+         "far_bracket": far_bracket, "thin_cup": thin_cup, "thin_enclosure": thin_enclosure, "long_rod": long_rod,
+         "pcb_standoffs": pcb_standoffs}
+TILTED = {"sheet", "bolt", "frustum", "boss_plate", "thin_cup", "thin_enclosure", "long_rod", "pcb_standoffs"}  # also placed at an angle (standard deflection)
+TILTED_FINE = {"pcb_standoffs"}  # and at fine deflection: 191 s and 1.4 GB for sweepcdt (session 40)
 FINE_ONLY = {"perforated_tube", "oblique_cylinders"}  # their standard exports are in tests/data/cad
 
 
@@ -191,6 +228,8 @@ def main(out_dir):
             tilted = shape.copy()
             tilted.rotate(V(0, 0, 0), *TILT)
             variants.append(("std_tilted", tilted, DEFLECTIONS["std"]))
+            if name in TILTED_FINE:
+                variants.append(("fine_tilted", tilted, DEFLECTIONS["fine"]))
         for label, s, (linear, angular) in variants:
             mesh = MeshPart.meshFromShape(Shape=s, LinearDeflection=linear, AngularDeflection=angular, Relative=False)
             mesh.write(os.path.join(out_dir, f"{name}_{label}.stl"))
