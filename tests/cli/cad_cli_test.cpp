@@ -22,13 +22,18 @@ Meshed mesh_and_check(const fs::path& surface, const fs::path& output, const Tem
   return m;
 }
 
-TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
-  const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "cad";
+// The surfaces in tests/data/FOLDER (STL, OBJ, PLY), sorted.
+std::vector<fs::path> surfaces_in(const std::string& folder) {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder))
+  for (const auto& entry : fs::directory_iterator(fs::path(SWEEPCDT_TEST_DATA) / folder))
     if (const auto ext = entry.path().extension(); ext == ".stl" || ext == ".obj" || ext == ".ply") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 20u) << folder;
+  return files;
+}
+
+TEST(CliCad, DefaultCommandMeshesCadPartsAndCheckVerifiesThem) {
+  const std::vector<fs::path> files = surfaces_in("cad");
+  ASSERT_GE(files.size(), 20u) << "tests/data/cad";
   TempDir dir;
   int meshed = 0;
   for (const fs::path& file : files) {
@@ -80,12 +85,8 @@ TEST(CliCad, ScanLikeSurfacesMeshByDefaultAndCheckVerifiesThem) {
 // Surfaces as MeshLab users simplify them (tests/data/decimated: quadric edge collapse of CAD parts,
 // faces flat only up to rounding): every one meshes by default, and `check` verifies it.
 TEST(CliCad, DecimatedSurfacesMeshByDefaultAndCheckVerifiesThem) {
-  const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "decimated";
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder))
-    if (entry.path().extension() == ".ply") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_EQ(files.size(), 6u) << folder;
+  const std::vector<fs::path> files = surfaces_in("decimated");
+  ASSERT_EQ(files.size(), 6u) << "tests/data/decimated";
   TempDir dir;
   int with_points = 0;
   for (const fs::path& file : files) {
@@ -101,12 +102,8 @@ TEST(CliCad, DecimatedSurfacesMeshByDefaultAndCheckVerifiesThem) {
 // in floats): no face is exactly flat, so the fans of long thin triangles on them need Steiner
 // points — 134290 added on the board, 18291 kept. Every one meshes by default, and `check` verifies it.
 TEST(CliCad, PartsPlacedAtAnAngleMeshByDefaultAndCheckVerifiesThem) {
-  const fs::path folder = fs::path(SWEEPCDT_TEST_DATA) / "tilted";
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder))
-    if (entry.path().extension() == ".stl") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_EQ(files.size(), 4u) << folder;
+  const std::vector<fs::path> files = surfaces_in("tilted");
+  ASSERT_EQ(files.size(), 4u) << "tests/data/tilted";
   TempDir dir;
   for (const fs::path& file : files) {
     const Meshed m = mesh_and_check(file, dir.path() / (file.stem().string() + ".mesh"), dir);

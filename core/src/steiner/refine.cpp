@@ -42,8 +42,8 @@ constexpr std::size_t kPointsPerFlippedPass = 8;
 // much as 1000 per input point, up to 2 million. Faces flat only up to rounding and drilled (a 1.6 mm
 // plate with 40 holes of 1 mm placed at an angle, 6920 points, bench/make_more_cad_parts.py) need
 // 1.18 million points to make their required segments Delaunay before the deletion pass keeps
-// 106796 (191 s, 1.4 GB): the old budget, 792000 there, refused them (exit 4). 2 million points
-// hold about 2.3 GB; a small hostile input still stops at 100 per point + 100000.
+// 106796 (about 190 s, 1.4 GB): the old budget, 792000 there, refused them (exit 4). 2 million
+// points hold about 2.3 GB; inputs of up to 111 points or from 19000 keep the old budget.
 constexpr std::size_t kMostRaisedBudget = 2000000;
 std::size_t steiner_budget(std::size_t input_points) {
   return std::max(100 * input_points + 100000, std::min(1000 * input_points, kMostRaisedBudget));
